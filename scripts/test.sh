@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds flume and runs the whole test suite: the GoogleTest suite
+# (Release), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the formatting
+# check, and the quick validation set.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install_deps.sh
+
+echo "== build (Release) and tests"
+bash scripts/build.sh
+ctest --test-dir build --output-on-failure -j 2
+
+echo "== build with AddressSanitizer + UndefinedBehaviorSanitizer, and tests"
+bash scripts/build.sh --sanitize
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build-sanitize --output-on-failure -j 2
+
+echo "== formatting (clang-format)"
+files=$(git ls-files '*.cpp' '*.hpp' 2>/dev/null || find src tests bench -name '*.[ch]pp')
+clang-format --dry-run --Werror $files
+
+echo "== quick validation (flume validate --quick)"
+./build/flume validate --quick --out build/validation-quick

@@ -1,0 +1,95 @@
+// The flume command line: turns arguments into a CaseSpec (or validation options) and calls the
+// library. Exit status (spec/contract.md): 0 success, 1 the simulation or a validation failed,
+// 2 bad input.
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "flume/case/case_reader.hpp"
+#include "flume/core/error.hpp"
+#include "flume/run/runner.hpp"
+#include "flume/validation/bundled_cases.hpp"
+#include "flume/validation/validate.hpp"
+
+namespace {
+
+int cmd_run(const std::string& case_file, const std::string& out,
+            const std::vector<std::string>& sets, int threads, bool quiet) {
+  const flume::CaseSpec spec = flume::read_case(case_file, sets);
+  flume::RunOptions opt;
+  opt.out_dir =
+      out.empty() ? std::filesystem::path("runs") / spec.name : std::filesystem::path(out);
+  opt.threads = threads;
+  opt.quiet = quiet;
+  const auto result = flume::run_case(spec, opt);
+  if (!result.completed) {
+    std::cerr << fmt::format("flume: {}: simulation failed: {} (output kept in {})\n", spec.name,
+                             result.error, opt.out_dir.string());
+    return 1;
+  }
+  if (!quiet) std::cout << fmt::format("results: {}\n", opt.out_dir.string());
+  return 0;
+}
+
+int cmd_cases() {
+  for (const auto& file : flume::bundled_case_files()) {
+    const auto spec = flume::read_case(file, {});
+    std::cout << fmt::format("{:<20} {}\n", spec.name, spec.description);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"flume: free-surface flow by Smoothed Particle Hydrodynamics"};
+  app.set_version_flag("--version", std::string("flume ") + FLUME_VERSION);
+  app.require_subcommand(1);
+
+  auto* run = app.add_subcommand("run", "run one case");
+  std::string case_file, out;
+  std::vector<std::string> sets;
+  int threads = 0;
+  bool quiet = false;
+  run->add_option("case", case_file, "case file (TOML)")->required();
+  run->add_option("--out", out, "run directory (default runs/<case name>)");
+  run->add_option("--set", sets, "override a case-file value: KEY=VALUE (dotted TOML path)")
+      ->allow_extra_args(false);
+  run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  run->add_flag("--quiet", quiet, "no progress line and no messages");
+
+  auto* val = app.add_subcommand("validate", "run validation cases and compare with references");
+  flume::ValidateOptions vopt;
+  std::string vout = "validation";
+  val->add_option("names", vopt.names, "bundled case names (default: all with references)");
+  val->add_flag("--quick", vopt.quick, "the reduced-resolution set that CI runs");
+  val->add_option("--out", vout, "output folder (default validation/)");
+  val->add_option("--threads", vopt.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  val->add_flag("--quiet", vopt.quiet, "no messages");
+
+  app.add_subcommand("cases", "list the bundled cases");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    if (run->parsed()) return cmd_run(case_file, out, sets, threads, quiet);
+    if (val->parsed()) {
+      vopt.out_dir = vout;
+      return flume::validate(vopt);
+    }
+    return cmd_cases();
+  } catch (const flume::InputError& e) {
+    std::cerr << "flume: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "flume: error: " << e.what() << "\n";
+    return 1;
+  }
+}

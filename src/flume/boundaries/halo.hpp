@@ -1,0 +1,82 @@
+// One mechanism for every ghost copy of a particle: mirror walls now, periodic images and MPI
+// halos later (Cabana's halo, LAMMPS's ghost atoms). A ghost is an affine image of a real
+// "source" particle, x' = S x + t with S diagonal (+-1), and its velocity is v' = P v with P
+// diagonal (+-1). Equations never know whether a neighbour is a ghost: the halo appends the
+// ghosts after the real particles and refreshes their fields from the sources between sweeps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "flume/core/particle_set.hpp"
+
+namespace flume {
+
+template <int D>
+struct GhostMap {
+  std::uint32_t source = 0;  // index of the real particle copied
+  Vec<D> scale;              // S: +1 (shift) or -1 (reflection) per axis
+  Vec<D> shift;              // t, m
+  Vec<D> vscale;             // P: +1 or -1 per axis
+};
+
+template <int D>
+class Halo {
+ public:
+  void clear() { maps_.clear(); }
+  void add(const GhostMap<D>& g) { maps_.push_back(g); }
+  std::size_t size() const { return maps_.size(); }
+  const std::vector<GhostMap<D>>& maps() const { return maps_; }
+
+  // Appends one ghost per map after the real particles and fills its state.
+  void append_ghosts(ParticleSet<D>& ps) const {
+    const std::size_t n = ps.n_real;
+    ps.resize(n + maps_.size());
+    for (std::size_t g = 0; g < maps_.size(); ++g) {
+      const auto& mp = maps_[g];
+      const std::size_t i = n + g;
+      const std::size_t s = mp.source;
+      ps.id[i] = ps.id[s];
+      ps.x[i] = mul(mp.scale, ps.x[s]) + mp.shift;
+      ps.v[i] = mul(mp.vscale, ps.v[s]);
+      ps.v_half[i] = mul(mp.vscale, ps.v_half[s]);
+      ps.m[i] = ps.m[s];
+      ps.rho[i] = ps.rho[s];
+      ps.rho_half[i] = ps.rho_half[s];
+      ps.h[i] = ps.h[s];
+      ps.p[i] = ps.p[s];
+    }
+  }
+
+  // Copies a scalar field (density, pressure, ...) from the sources to their ghosts.
+  void update_scalar(const ParticleSet<D>& ps, std::vector<double>& f) const {
+    for (std::size_t g = 0; g < maps_.size(); ++g)
+      f[ps.n_real + g] = f[maps_[g].source];
+  }
+
+  // The ghost's velocity field is v'(x) = P v(S^-1 (x - t)), so its gradient is P G S
+  // (S = S^-1 for +-1 entries). For a free-slip mirror (P = S) this flips the shear
+  // components, so the wall carries no shear stress; for no-slip (P = -I) it keeps them.
+  void update_velocity_gradient(ParticleSet<D>& ps) const {
+    for (std::size_t g = 0; g < maps_.size(); ++g) {
+      const auto& mp = maps_[g];
+      const auto& G = ps.grad_v[mp.source];
+      Mat<D> out;
+      for (int k = 0; k < D; ++k)
+        for (int l = 0; l < D; ++l)
+          out(k, l) = mp.vscale[k] * G(k, l) * mp.scale[l];
+      ps.grad_v[ps.n_real + g] = out;
+    }
+  }
+
+ private:
+  static Vec<D> mul(const Vec<D>& s, const Vec<D>& v) {
+    Vec<D> r;
+    for (int k = 0; k < D; ++k)
+      r[k] = s[k] * v[k];
+    return r;
+  }
+  std::vector<GhostMap<D>> maps_;
+};
+
+}  // namespace flume

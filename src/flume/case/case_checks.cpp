@@ -1,0 +1,233 @@
+#include "flume/case/case_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+#include "flume/core/error.hpp"
+#include "flume/kernels/kernel.hpp"
+#include "flume/schemes/registry.hpp"
+
+namespace flume {
+
+namespace {
+
+class Reader {
+ public:
+  Reader(const toml::table& t, std::string file) : t_(t), file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw InputError(fmt::format("{}: {}: {}", file_, key, what));
+  }
+
+  const toml::node& node(const std::string& key) const {
+    auto v = t_.at_path(key);
+    if (!v) fail(key, "missing");
+    return *v.node();
+  }
+  double num(const std::string& key) const {
+    const auto& n = node(key);
+    if (auto d = n.value<double>()) return *d;
+    fail(key, "must be a number");
+  }
+  long integer(const std::string& key) const {
+    return static_cast<long>(*node(key).value<int64_t>());
+  }
+  bool boolean(const std::string& key) const { return *node(key).value<bool>(); }
+  std::string str(const std::string& key) const { return *node(key).value<std::string>(); }
+  std::vector<double> vec(const std::string& key) const {
+    std::vector<double> out;
+    for (const auto& e : *node(key).as_array())
+      out.push_back(*e.value<double>());
+    for (double x : out)
+      if (!std::isfinite(x)) fail(key, "must be finite");
+    return out;
+  }
+  std::vector<std::string> strings(const std::string& key) const {
+    std::vector<std::string> out;
+    for (const auto& e : *node(key).as_array())
+      out.push_back(*e.value<std::string>());
+    return out;
+  }
+
+  double positive(const std::string& key) const {
+    const double x = num(key);
+    if (!(x > 0.0) || !std::isfinite(x)) fail(key, fmt::format("= {}: must be > 0", x));
+    return x;
+  }
+  double non_negative(const std::string& key) const {
+    const double x = num(key);
+    if (!(x >= 0.0) || !std::isfinite(x)) fail(key, fmt::format("= {}: must be >= 0", x));
+    return x;
+  }
+  double in_range(const std::string& key, double lo, double hi) const {
+    const double x = num(key);
+    if (!(x >= lo && x <= hi)) fail(key, fmt::format("= {}: must be in [{}, {}]", x, lo, hi));
+    return x;
+  }
+  std::string one_of(const std::string& key, const std::vector<std::string>& allowed) const {
+    const std::string s = str(key);
+    if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
+      fail(key, fmt::format("= \"{}\": must be one of {}", s, fmt::join(allowed, ", ")));
+    return s;
+  }
+
+ private:
+  const toml::table& t_;
+  std::string file_;
+};
+
+const char* axis_name(int k) {
+  return k == 0 ? "x" : k == 1 ? "y" : "z";
+}
+
+}  // namespace
+
+CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int dim) {
+  const std::string fname = file.string();
+  Reader r(t, fname);
+  CaseSpec s;
+  s.file = file;
+  s.dimension = dim;
+
+  s.name = r.str("case.name");
+  if (!std::regex_match(s.name, std::regex("[A-Za-z0-9_-]+")))
+    r.fail("case.name",
+           fmt::format("= \"{}\": required; letters, digits, '_' and '-' only", s.name));
+  s.description = r.str("case.description");
+  s.end_time = r.positive("case.end_time");
+  s.dt = r.non_negative("case.dt");
+
+  s.spacing = r.positive("particles.spacing");
+
+  s.preset = r.one_of("scheme.preset", preset_names());
+  s.kernel = r.one_of("scheme.kernel", kernel_names());
+  const SchemeRows rows = *preset_rows(s.preset);
+  s.density = r.str("scheme.density").empty()
+                  ? rows.density
+                  : r.one_of("scheme.density", {"summation", "continuity"});
+  s.force = r.str("scheme.force").empty() ? rows.force : r.one_of("scheme.force", {"bl7", "bl20"});
+  const auto& combos = scheme_combinations();
+  if (std::find(combos.begin(), combos.end(), s.density + "+" + s.force) == combos.end())
+    r.fail("scheme.force", fmt::format("= \"{}\" has no scheme with density \"{}\"; available "
+                                       "density+force: {}",
+                                       s.force, s.density, fmt::join(combos, ", ")));
+  s.h_over_dx = r.in_range("scheme.h_over_dx", 0.5, 4.0);
+  r.one_of("scheme.integrator", {"leapfrog"});
+  s.cfl = r.in_range("scheme.cfl", 1e-6, 1.0);
+  s.alpha = r.non_negative("scheme.alpha");
+  s.beta = r.non_negative("scheme.beta");
+
+  s.rho0 = r.positive("fluid.density");
+  s.mu = r.non_negative("fluid.viscosity");
+  s.gravity = r.vec("fluid.gravity");
+
+  r.one_of("eos.kind", {"tait"});
+  s.gamma = r.in_range("eos.gamma", 1.0, 20.0);
+  s.bulk_modulus = r.non_negative("eos.bulk_modulus");
+  s.sound_speed = r.non_negative("eos.sound_speed");
+  const double ratio = r.positive("eos.speed_ratio");
+  double u_max = r.non_negative("eos.max_flow_speed");
+
+  s.domain_min = r.vec("domain.min");
+  s.domain_max = r.vec("domain.max");
+  for (int k = 0; k < dim; ++k)
+    if (!(s.domain_min[k] < s.domain_max[k]))
+      r.fail("domain.max", fmt::format("must exceed domain.min along {}", axis_name(k)));
+  for (int k = 0; k < dim; ++k)
+    for (const char* side : {"_min", "_max"})
+      s.walls.push_back(r.one_of(std::string("boundaries.") + axis_name(k) + side,
+                                 {"free_slip", "no_slip", "open"}));
+
+  const auto* blocks = t.at_path("fluid_blocks").as_array();
+  if (!blocks || blocks->empty())
+    r.fail("fluid_blocks", "at least one [[fluid_blocks]] is required");
+  double tallest = 0.0;
+  for (std::size_t b = 0; b < blocks->size(); ++b) {
+    const std::string key = fmt::format("fluid_blocks[{}]", b);
+    FluidBlock fb;
+    fb.min = r.vec(key + ".min");
+    fb.max = r.vec(key + ".max");
+    fb.velocity = r.vec(key + ".velocity");
+    fb.hydrostatic = r.boolean(key + ".hydrostatic");
+    for (int k = 0; k < dim; ++k) {
+      if (!(fb.min[k] < fb.max[k]))
+        r.fail(key + ".max", fmt::format("must exceed min along {}", axis_name(k)));
+      if (fb.min[k] < s.domain_min[k] || fb.max[k] > s.domain_max[k])
+        r.fail(key, "must lie inside the domain box");
+      if (fb.max[k] - fb.min[k] < s.spacing)
+        r.fail(key, fmt::format("is thinner than one particle spacing along {}", axis_name(k)));
+    }
+    tallest = std::max(tallest, fb.max[dim - 1] - fb.min[dim - 1]);
+    s.blocks.push_back(fb);
+  }
+
+  // Sound speed and bulk modulus: kappa = rho0 c0^2 / gamma, c0 = m u_max, u_max = sqrt(2 g H)
+  // (BL (64), (66)) unless given.
+  double c0 = 0.0;
+  if (s.bulk_modulus > 0.0) {
+    c0 = std::sqrt(s.gamma * s.bulk_modulus / s.rho0);
+  } else if (s.sound_speed > 0.0) {
+    c0 = s.sound_speed;
+  } else {
+    double g = 0.0;
+    for (double x : s.gravity)
+      g += x * x;
+    g = std::sqrt(g);
+    if (u_max == 0.0) u_max = std::sqrt(2.0 * g * tallest);
+    if (!(u_max > 0.0))
+      r.fail("eos.sound_speed",
+             "cannot be derived without gravity: set eos.sound_speed, "
+             "eos.bulk_modulus or eos.max_flow_speed");
+    c0 = ratio * u_max;
+  }
+  s.sound_speed = c0;
+  s.bulk_modulus = s.rho0 * c0 * c0 / s.gamma;
+
+  s.output_interval = r.positive("output.interval");
+  s.snapshot_interval = r.non_negative("output.snapshot_interval");
+  s.resort_every = static_cast<int>(r.integer("output.resort_every"));
+  if (s.resort_every < 0) r.fail("output.resort_every", "must be >= 0");
+
+  s.surge_front = r.boolean("probes.surge_front");
+  s.column_height = r.boolean("probes.column_height");
+  s.floor_layer = r.positive("probes.floor_layer");
+  s.wall_band = r.positive("probes.wall_band");
+
+  s.quick = r.strings("validation.quick");
+  s.time_scale = r.positive("validation.time_scale");
+  s.notes = r.strings("validation.notes");
+  if (const auto* curves = t.at_path("validation.curves").as_array()) {
+    for (std::size_t c = 0; c < curves->size(); ++c) {
+      const std::string key = fmt::format("validation.curves[{}]", c);
+      CurveCheck cc;
+      cc.probe = r.one_of(key + ".probe", {"surge_front", "column_height"});
+      cc.label = r.str(key + ".label");
+      cc.reference = file.parent_path() / r.str(key + ".reference");
+      if (!std::filesystem::exists(cc.reference))
+        r.fail(key + ".reference", fmt::format("file {} not found", cc.reference.string()));
+      cc.reference_x = r.str(key + ".reference_x");
+      cc.reference_y = r.str(key + ".reference_y");
+      cc.source = r.str(key + ".source");
+      cc.value_scale = r.positive(key + ".value_scale");
+      cc.tolerance = r.positive(key + ".tolerance");
+      cc.quick_tolerance = r.positive(key + ".quick_tolerance");
+      s.curves.push_back(cc);
+    }
+  }
+  return s;
+}
+
+toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
+  auto* scheme = t["scheme"].as_table();
+  scheme->insert_or_assign("density", spec.density);
+  scheme->insert_or_assign("force", spec.force);
+  auto* eos = t["eos"].as_table();
+  eos->insert_or_assign("bulk_modulus", spec.bulk_modulus);
+  eos->insert_or_assign("sound_speed", spec.sound_speed);
+  return t;
+}
+
+}  // namespace flume

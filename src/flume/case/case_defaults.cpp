@@ -1,0 +1,110 @@
+// The documented default of every case-file key. This text is the schema: a key that is not here
+// is unknown, and a value must have the type shown. Vectors have one entry per dimension.
+#include <fmt/format.h>
+
+#include "flume/case/case_reader.hpp"
+
+namespace flume {
+
+namespace {
+std::string defaults_for(int d) {
+  const std::string zero = d == 3 ? "[0.0, 0.0, 0.0]" : "[0.0, 0.0]";
+  const std::string one = d == 3 ? "[1.0, 1.0, 1.0]" : "[1.0, 1.0]";
+  const std::string gravity = d == 3 ? "[0.0, 0.0, -9.81]" : "[0.0, -9.81]";
+  const std::string z_walls = d == 3 ? "z_min = \"free_slip\"\nz_max = \"free_slip\"\n" : "";
+  return fmt::format(R"toml(# flume case file: every key, its default and its unit.
+[case]
+name = ""              # required: letters, digits, '_' and '-'; also the output folder name
+description = ""       # one line, shown by `flume cases`
+dimension = 2          # 2 or 3; the last axis is vertical
+end_time = 1.0         # s
+dt = 0.0               # fixed time step, s; 0 = the CFL rule of BL (63)
+
+[particles]
+spacing = 0.001        # initial particle spacing dx, m (particles on a square lattice)
+
+[scheme]
+preset = "continuity"  # standard | continuity | inconsistent (spec/methods.md)
+kernel = "cubic_spline"  # cubic_spline | quintic_spline | gaussian | wendland_c2
+h_over_dx = 1.3        # smoothing length h = h_over_dx * spacing
+density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4))
+force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20))
+integrator = "leapfrog"  # BL (61)-(62)
+cfl = 0.3              # Courant number C_FL of BL (63)
+alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off
+beta = 0.0             # artificial viscosity beta, W (3.18)
+
+[fluid]
+density = 1000.0       # reference density rho0, kg/m^3
+viscosity = 0.0        # dynamic viscosity mu, Pa s (BL (22)-(25)); 0 = inviscid
+gravity = {gravity}    # m/s^2
+
+[eos]
+kind = "tait"          # Tait BL (60), gamma, p_atm = 0
+gamma = 7.0
+bulk_modulus = 0.0     # kappa, Pa; 0 = from sound_speed
+sound_speed = 0.0      # c0, m/s; 0 = speed_ratio * max_flow_speed (BL (64))
+speed_ratio = 10.0     # m of BL (64): c0 = m u_max
+max_flow_speed = 0.0   # u_max, m/s; 0 = sqrt(2 g H), H the tallest fluid block (BL (66))
+
+[domain]
+min = {zero}           # box corner, m
+max = {one}            # box corner, m
+
+[boundaries]           # each side: free_slip | no_slip (mirror ghosts, W 6.1) | open
+x_min = "free_slip"
+x_max = "free_slip"
+y_min = "free_slip"
+y_max = "free_slip"
+{z_walls}
+[output]
+interval = 0.01        # s between rows of diagnostics.csv and probes.csv
+snapshot_interval = 0.05  # s between ParaView snapshots; 0 = none
+resort_every = 25      # steps between re-sorting particles by cell (speed only)
+
+[probes]
+surge_front = false    # distance from domain.min along x to the leading particle on the floor
+column_height = false  # height of the water at the x_min wall
+floor_layer = 2.0      # surge front: particles within this many spacings of the floor count
+wall_band = 2.0        # column height: particles within this many spacings of the wall count
+
+[validation]
+quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (validate --quick)
+time_scale = 1.0       # s; the references' time is t / time_scale
+notes = []             # the papers' own numbers, quoted in the report
+
+# [[fluid_blocks]]: at least one; each a box of fluid on the particle lattice:
+#   min = {zero}, max = {one} (m), velocity = {zero} (m/s), hydrostatic = true
+# [[validation.curves]]: a probe compared with a reference curve:
+#   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
+#   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
+#   tolerance = 0.1, quick_tolerance = 0.1 (max relative error over the points)
+)toml",
+                     fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
+                     fmt::arg("z_walls", z_walls));
+}
+}  // namespace
+
+const std::string& case_defaults_toml(int dimension) {
+  static const std::string d2 = defaults_for(2);
+  static const std::string d3 = defaults_for(3);
+  return dimension == 3 ? d3 : d2;
+}
+
+const std::string& fluid_block_defaults(int dimension) {
+  static const std::string d2 =
+      "min = [0.0, 0.0]\nmax = [1.0, 1.0]\nvelocity = [0.0, 0.0]\nhydrostatic = true\n";
+  static const std::string d3 =
+      "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
+      "hydrostatic = true\n";
+  return dimension == 3 ? d3 : d2;
+}
+
+const std::string& curve_defaults() {
+  static const std::string d =
+      "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
+      "source = \"\"\nvalue_scale = 1.0\ntolerance = 0.1\nquick_tolerance = 0.1\n";
+  return d;
+}
+
+}  // namespace flume

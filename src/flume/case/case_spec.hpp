@@ -1,0 +1,86 @@
+// A case, read, validated and resolved: every value the run needs, in SI units, with the
+// dimension still a run-time number (vectors have `dimension` entries). The command line only
+// builds a CaseSpec; the library builds the simulation from it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace flume {
+
+struct FluidBlock {
+  std::vector<double> min, max;  // m
+  std::vector<double> velocity;  // m/s
+  bool hydrostatic = true;       // initial density in hydrostatic equilibrium under gravity
+};
+
+// A probe curve compared with a reference data set (validate).
+struct CurveCheck {
+  std::string probe;                // probes.csv column
+  std::string label;                // for the report
+  std::filesystem::path reference;  // CSV, resolved against the case file's folder
+  std::string reference_x;          // its column of dimensionless time
+  std::string reference_y;          // its column of the dimensionless probe value
+  std::string source;               // where the reference comes from
+  double value_scale = 1.0;         // probe value (m) divided by this gives the reference's y
+  double tolerance = 0.1;           // max relative error allowed over the compared points
+  double quick_tolerance = 0.1;
+};
+
+struct CaseSpec {
+  std::filesystem::path file;  // the case file read
+  std::string resolved_toml;   // the fully resolved case file (every default written out)
+
+  // [case]
+  std::string name;
+  std::string description;
+  int dimension = 2;
+  double end_time = 1.0;  // s
+  double dt = 0.0;        // s; 0 = CFL rule
+
+  // [particles]
+  double spacing = 0.0;  // m
+
+  // [scheme]
+  std::string preset;
+  std::string kernel;
+  std::string density;  // resolved row
+  std::string force;    // resolved row
+  double h_over_dx = 1.3;
+  double cfl = 0.3;
+  double alpha = 0.0;
+  double beta = 0.0;
+
+  // [fluid] and [eos]
+  double rho0 = 1000.0;         // kg/m^3
+  double mu = 0.0;              // Pa s
+  std::vector<double> gravity;  // m/s^2
+  double gamma = 7.0;
+  double bulk_modulus = 0.0;  // Pa, resolved
+  double sound_speed = 0.0;   // m/s, resolved
+
+  // [domain] and [boundaries]
+  std::vector<double> domain_min, domain_max;  // m
+  std::vector<std::string> walls;  // per axis lower, upper: "free_slip" | "no_slip" | "open"
+  std::vector<FluidBlock> blocks;
+
+  // [output]
+  double output_interval = 0.01;    // s, diagnostics and probes
+  double snapshot_interval = 0.05;  // s; 0 = no snapshots
+  int resort_every = 25;
+
+  // [probes]
+  bool surge_front = false;
+  bool column_height = false;
+  double floor_layer = 2.0;  // spacings
+  double wall_band = 2.0;    // spacings
+
+  // [validation]
+  std::vector<std::string> quick;  // KEY=VALUE overrides of the reduced-resolution run
+  double time_scale = 1.0;         // s: reference time = t / time_scale
+  std::vector<std::string> notes;  // the papers' numbers, set beside flume's in the report
+  std::vector<CurveCheck> curves;
+};
+
+}  // namespace flume

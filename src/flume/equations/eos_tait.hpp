@@ -1,0 +1,40 @@
+// Tait equation of state, BL (60) / W (5.22), compression positive (methods.md erratum 1):
+//   p = kappa [ (rho / rho0)^gamma - 1 ],   p_atm = 0.
+// The bulk modulus kappa comes from a sound speed, kappa = rho0 c0^2 / gamma (BL (64), (66)).
+#pragma once
+
+#include <cmath>
+
+namespace flume {
+
+struct TaitEos {
+  double rho0 = 1000.0;  // reference density, kg/m^3
+  double gamma = 7.0;    // exponent, -
+  double kappa = 0.0;    // bulk modulus B, Pa
+
+  double pressure(double rho) const { return kappa * (std::pow(rho / rho0, gamma) - 1.0); }
+
+  // c = sqrt(dp/drho) = c0 (rho/rho0)^((gamma-1)/2); BL (63) uses the reference value c0.
+  double sound_speed(double rho) const {
+    return std::sqrt(gamma * kappa / rho0 * std::pow(rho / rho0, gamma - 1.0));
+  }
+  double reference_sound_speed() const { return std::sqrt(gamma * kappa / rho0); }
+
+  // Stored elastic energy per unit mass, e(rho) = int_{rho0}^{rho} p / rho'^2 drho', the U of
+  // BL (10)-(11) for this fluid: what the internal_energy diagnostic sums, so that kinetic +
+  // potential + internal energy is conserved by an inviscid run.
+  double specific_internal_energy(double rho) const {
+    const double r0g = std::pow(rho0, gamma);
+    return kappa / r0g * (std::pow(rho, gamma - 1.0) - std::pow(rho0, gamma - 1.0)) /
+               (gamma - 1.0) +
+           kappa * (1.0 / rho - 1.0 / rho0);
+  }
+
+  // Density of still water at depth d below a free surface at p = 0 (the exact discrete
+  // equilibrium of this EOS): rho0 (1 + rho0 g d / kappa)^(1/gamma).
+  double hydrostatic_density(double g_times_depth) const {
+    return rho0 * std::pow(1.0 + rho0 * g_times_depth / kappa, 1.0 / gamma);
+  }
+};
+
+}  // namespace flume

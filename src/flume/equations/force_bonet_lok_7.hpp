@@ -1,0 +1,27 @@
+// Pressure force BL (7), variationally consistent with the summation density BL (1):
+//   T_a = sum_b m_a m_b (p_a/rho_a^2 + p_b/rho_b^2) grad W_a(x_b).
+// Compression positive (methods.md erratum 1): a_a = +T_a/m_a, and with
+// grad W_a(x_b) = -grad_{x_a} W(x_a - x_b) this is the familiar
+//   a_a = -sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab,
+// which pushes compressed particles apart. The pair force is antisymmetric and central.
+#pragma once
+
+#include "flume/core/particle_set.hpp"
+#include "flume/equations/pair.hpp"
+
+namespace flume {
+
+template <int D>
+struct ForceBonetLok7 {
+  using Acc = Vec<D>;
+  ParticleSet<D>& ps;
+
+  Acc init(std::size_t) const { return {}; }
+  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
+    const double ri = ps.rho[i], rj = ps.rho[g.j];
+    a -= g.gradw * (ps.m[g.j] * (ps.p[i] / (ri * ri) + ps.p[g.j] / (rj * rj)));
+  }
+  void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
+};
+
+}  // namespace flume

@@ -1,0 +1,21 @@
+// The geometry of one interacting pair (i, j), computed once by the sweep driver and handed to
+// every equation of a group: no equation recomputes r, W or grad W.
+#pragma once
+
+#include <cstddef>
+
+#include "flume/core/vec.hpp"
+
+namespace flume {
+
+template <int D>
+struct Pair {
+  std::size_t j = 0;  // neighbour index (may be a ghost)
+  Vec<D> xij;         // x_i - x_j, m
+  double r = 0.0;     // |x_i - x_j|, m
+  double h = 0.0;     // pair smoothing length (h_i + h_j)/2 (W, text after (3.46)), m
+  double w = 0.0;     // W(r, h), 1/m^D
+  Vec<D> gradw;       // grad_{x_i} W(x_i - x_j, h) = BL's grad W_j(x_i) = -grad W_i(x_j), 1/m^(D+1)
+};
+
+}  // namespace flume

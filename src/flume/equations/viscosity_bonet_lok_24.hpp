@@ -1,0 +1,41 @@
+// Physical viscosity through the velocity gradient, BL (22)-(25), with BL (24)'s V_b V_b read as
+// V_a V_b (methods.md erratum 3). In BL's tension-positive convention
+//   T_a^mu = sum_b V_a V_b (sigma'_a + sigma'_b) grad W_a(x_b),  sigma' = 2 mu d'.
+// flume is compression positive with total stress sigma = -p I + sigma' (erratum 1), so the
+// deviatoric stress enters with the opposite sign to p:
+//   a_a += sum_b m_b/(rho_a rho_b) (sigma'_a + sigma'_b) grad_a W_ab.
+// The deviator is BL (23)'s d' = d - (1/3) tr(d) I also in 2D: plane strain (d_zz = 0) of a
+// physical 3D fluid, so the 2D and 3D instantiations describe the same fluid.
+#pragma once
+
+#include "flume/core/particle_set.hpp"
+#include "flume/equations/pair.hpp"
+
+namespace flume {
+
+// sigma' = 2 mu d',  d = (G + G^T)/2,  d' = d - tr(d)/3 I  (BL (23)-(24)).
+template <int D>
+Mat<D> deviatoric_stress(const Mat<D>& grad_v, double mu) {
+  Mat<D> d = (grad_v + transpose(grad_v)) * 0.5;
+  const double third_tr = trace(d) / 3.0;
+  for (int k = 0; k < D; ++k)
+    d(k, k) -= third_tr;
+  return d * (2.0 * mu);
+}
+
+template <int D>
+struct ViscosityBonetLok24 {
+  using Acc = Vec<D>;
+  ParticleSet<D>& ps;
+  double mu;  // dynamic viscosity, Pa s
+
+  Acc init(std::size_t) const { return {}; }
+  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
+    // Recomputing sigma'_i per pair is cheap in 2D/3D and keeps no extra per-particle array.
+    const Mat<D> s = deviatoric_stress(ps.grad_v[i], mu) + deviatoric_stress(ps.grad_v[g.j], mu);
+    a += (s * g.gradw) * (ps.m[g.j] / (ps.rho[i] * ps.rho[g.j]));
+  }
+  void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
+};
+
+}  // namespace flume

@@ -1,0 +1,53 @@
+// Cubic B-spline kernel, W (2.19)-(2.20), support 2h (W's eps is our h):
+//   W(r, h) = C(n) / h^n * { 1 - 3/2 q^2 + 3/4 q^3   for 0 <= q <= 1,
+//                          { 1/4 (2 - q)^3           for 1 <  q <= 2,     q = r / h,
+//                          { 0                       for q > 2,
+//   C(n) = 2/3, 10/(7 pi), 1/pi for n = 1, 2, 3.
+// It is evaluated as the sum of truncated powers 1/4 (2 - q)_+^3 - (1 - q)_+^3, which is the
+// same polynomial on q <= 1, so the inner loop has no branch on the piece.
+#pragma once
+
+#include <algorithm>
+#include <numbers>
+#include <string_view>
+
+namespace flume {
+
+template <int D>
+struct CubicSpline {
+  static_assert(D >= 1 && D <= 3, "flume supports 1, 2 and 3 dimensions");
+  static constexpr double support = 2.0;  // radius in units of h
+  static constexpr std::string_view name = "cubic_spline";
+  // C(n), W (2.20).
+  static constexpr double norm = D == 1   ? 2.0 / 3.0
+                                 : D == 2 ? 10.0 / (7.0 * std::numbers::pi)
+                                          : 1.0 / std::numbers::pi;
+
+  // W in 1/m^D.
+  static double w(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double a = std::max(0.0, 2.0 - q);
+    const double b = std::max(0.0, 1.0 - q);
+    const double v = norm * inv_hd(ih) * (0.25 * a * a * a - b * b * b);
+    // The cut on r itself (not on the rounded q) makes W exactly 0 at r = support * h.
+    return r < support * h ? v : 0.0;
+  }
+
+  // dW/dr in 1/m^(D+1).
+  static double dwdr(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double a = std::max(0.0, 2.0 - q);
+    const double b = std::max(0.0, 1.0 - q);
+    const double v = norm * inv_hd(ih) * ih * (3.0 * b * b - 0.75 * a * a);
+    return r < support * h ? v : 0.0;
+  }
+
+ private:
+  static constexpr double inv_hd(double ih) {
+    return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;
+  }
+};
+
+}  // namespace flume

@@ -1,0 +1,198 @@
+#include "flume/run/runner.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "flume/case/build_simulation.hpp"
+#include "flume/core/error.hpp"
+#include "flume/io/atomic_file.hpp"
+#include "flume/probes/column_height.hpp"
+#include "flume/probes/surge_front.hpp"
+#include "flume/run/run_output.hpp"
+#include "flume/sim/diagnostics.hpp"
+
+namespace flume {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <int D>
+io::PointCloud snapshot_cloud(const ParticleSet<D>& ps) {
+  io::PointCloud cloud;
+  const std::size_t n = ps.n_real;
+  cloud.xyz.resize(3 * n, 0.0);
+  io::PointField vel{"velocity", 3, std::vector<double>(3 * n, 0.0)};
+  io::PointField rho{"density", 1, {}}, p{"pressure", 1, {}}, m{"mass", 1, {}};
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) {
+      cloud.xyz[3 * i + k] = ps.x[i][k];
+      vel.data[3 * i + k] = ps.v[i][k];
+    }
+    rho.data.push_back(ps.rho[i]);
+    p.data.push_back(ps.p[i]);
+    m.data.push_back(ps.m[i]);
+    cloud.ids.push_back(ps.id[i]);
+  }
+  cloud.fields = {std::move(vel), std::move(rho), std::move(p), std::move(m)};
+  return cloud;
+}
+
+std::vector<std::string> probe_columns(const CaseSpec& spec) {
+  std::vector<std::string> cols{"time"};
+  if (spec.surge_front) cols.push_back("surge_front");
+  if (spec.column_height) cols.push_back("column_height");
+  return cols;
+}
+
+template <int D>
+std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim) {
+  const auto& ps = sim.particles();
+  const double wall = spec.domain_min[0];
+  const double floor = spec.domain_min[D - 1];
+  std::vector<double> row{sim.time()};
+  if (spec.surge_front)
+    row.push_back(surge_front(ps, wall, floor, spec.floor_layer * spec.spacing, spec.spacing));
+  if (spec.column_height)
+    row.push_back(column_height(ps, wall, floor, spec.wall_band * spec.spacing, spec.spacing));
+  return row;
+}
+
+// The in-place progress line: simulated time, percent, steps per second, ETA.
+class Progress {
+ public:
+  Progress(bool enabled, double end_time) : enabled_(enabled), end_(end_time) {}
+  void update(double t, long steps, double wall) {
+    if (!enabled_ || wall - last_ < 0.25) return;
+    last_ = wall;
+    const double frac = t / end_;
+    const double eta = frac > 0.0 ? wall * (1.0 - frac) / frac : 0.0;
+    std::fprintf(stdout, "\r  t = %.4g s  %5.1f %%  %.0f steps/s  ETA %.0f s   ", t, 100.0 * frac,
+                 static_cast<double>(steps) / std::max(wall, 1e-9), eta);
+    std::fflush(stdout);
+  }
+  void finish() {
+    if (enabled_) std::fprintf(stdout, "\r%78s\r", "");
+  }
+
+ private:
+  bool enabled_;
+  double end_;
+  double last_ = -1.0;
+};
+
+void write_summary(const std::filesystem::path& dir, const CaseSpec& spec, const RunResult& r) {
+  nlohmann::ordered_json j;
+  j["case"] = spec.name;
+  j["status"] = r.completed ? "completed" : "failed";
+  j["error"] = r.completed ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.error);
+  j["particles"] = r.particles;
+  j["steps"] = r.steps;
+  j["simulated_time"] = r.simulated_time;
+  j["wall_seconds"] = r.wall_seconds;
+  j["particle_steps_per_second"] = r.particle_steps_per_second;
+  j["threads"] = r.threads;
+  j["ranks"] = 1;
+  j["flume_version"] = FLUME_VERSION;
+  io::write_file_atomic(dir / "summary.json", j.dump(2) + "\n");
+}
+
+template <int D>
+RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
+  RunResult result;
+  result.threads = omp_get_max_threads();
+  const auto start = Clock::now();
+  auto wall = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+  std::filesystem::create_directories(opt.out_dir);
+  io::write_file_atomic(opt.out_dir / "case.toml", spec.resolved_toml);
+  RunOutput out(opt.out_dir, diagnostics_columns<D>(), probe_columns(spec), opt.quiet);
+  const bool tty = isatty(fileno(stdout)) != 0;
+  Progress progress(tty && !opt.quiet, spec.end_time);
+
+  std::unique_ptr<Simulation<D>> sim;
+  try {
+    sim = std::make_unique<Simulation<D>>(build_simulation<D>(spec));
+  } catch (const SimulationError& e) {
+    result.error = e.what();
+  }
+  if (sim) {
+    result.particles = sim->particles().n_real;
+    out.log(
+        fmt::format("flume {}: case {} ({}D), {} particles, scheme {} ({} density + {} force), "
+                    "kernel {}, {} thread(s)",
+                    FLUME_VERSION, spec.name, D, result.particles, spec.preset, spec.density,
+                    spec.force, spec.kernel, result.threads));
+    out.log(fmt::format("  c0 = {:.4g} m/s, kappa = {:.4g} Pa, h = {:.4g} m, end time {} s",
+                        spec.sound_speed, spec.bulk_modulus, spec.h_over_dx * spec.spacing,
+                        spec.end_time));
+    auto record = [&] {
+      out.add_diagnostics(diagnostics_row(sim->particles(), sim->physics(), sim->time(),
+                                          sim->steps(), sim->last_dt()));
+      out.add_probes(probe_row(spec, *sim));
+    };
+    record();
+    if (spec.snapshot_interval > 0.0) out.add_snapshot(0.0, snapshot_cloud(sim->particles()));
+    out.flush();
+    long next_output = 1, next_snapshot = 1;
+    // A step never overshoots the end; output happens at the first step at or past each
+    // output time (times are recorded exactly in the files).
+    const double eps = 1e-12 * spec.end_time;
+    try {
+      while (sim->time() < spec.end_time - eps) {
+        sim->step(spec.end_time - sim->time());
+        const bool last = sim->time() >= spec.end_time - eps;
+        if (last || sim->time() >= static_cast<double>(next_output) * spec.output_interval - eps) {
+          record();
+          while (static_cast<double>(next_output) * spec.output_interval <= sim->time() + eps)
+            ++next_output;
+          out.flush();
+        }
+        if (spec.snapshot_interval > 0.0 &&
+            (last ||
+             sim->time() >= static_cast<double>(next_snapshot) * spec.snapshot_interval - eps)) {
+          out.add_snapshot(sim->time(), snapshot_cloud(sim->particles()));
+          while (static_cast<double>(next_snapshot) * spec.snapshot_interval <= sim->time() + eps)
+            ++next_snapshot;
+        }
+        progress.update(sim->time(), sim->steps(), wall());
+      }
+      result.completed = true;
+    } catch (const SimulationError& e) {
+      result.error = e.what();
+    }
+    progress.finish();
+    result.steps = sim->steps();
+    result.simulated_time = sim->time();
+  }
+  result.wall_seconds = wall();
+  result.particle_steps_per_second =
+      result.wall_seconds > 0.0 ? static_cast<double>(result.particles) *
+                                      static_cast<double>(result.steps) / result.wall_seconds
+                                : 0.0;
+  if (result.completed) {
+    out.log(fmt::format("completed: {} steps to t = {:.6g} s in {:.2f} s ({:.3g} particle-steps/s)",
+                        result.steps, result.simulated_time, result.wall_seconds,
+                        result.particle_steps_per_second));
+  } else {
+    out.log("failed: " + result.error);
+  }
+  out.flush();
+  write_summary(opt.out_dir, spec, result);
+  return result;
+}
+
+}  // namespace
+
+RunResult run_case(const CaseSpec& spec, const RunOptions& options) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  return spec.dimension == 3 ? run_dim<3>(spec, options) : run_dim<2>(spec, options);
+}
+
+}  // namespace flume

@@ -1,0 +1,34 @@
+// Running a case to its end time and writing its run directory (spec/contract.md): case.toml,
+// diagnostics.csv, probes.csv, snapshots/ (.pvd + .vtu), summary.json, log.txt, each written
+// atomically. A failed simulation keeps everything written so far and says why in summary.json.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "flume/case/case_spec.hpp"
+
+namespace flume {
+
+struct RunOptions {
+  std::filesystem::path out_dir;  // run directory
+  int threads = 0;                // 0 = OpenMP's default
+  bool quiet = false;             // no progress line, no messages on stdout
+};
+
+struct RunResult {
+  bool completed = false;
+  std::string error;  // empty when completed
+  std::size_t particles = 0;
+  long steps = 0;
+  double simulated_time = 0.0;
+  double wall_seconds = 0.0;
+  double particle_steps_per_second = 0.0;
+  int threads = 1;
+};
+
+// Runs the case; never throws for a failed simulation (see RunResult), only for I/O errors.
+RunResult run_case(const CaseSpec& spec, const RunOptions& options);
+
+}  // namespace flume

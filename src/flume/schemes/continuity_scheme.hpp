@@ -1,0 +1,53 @@
+// Preset "continuity": continuity density BL (2)-(4) + force BL (20), variationally consistent
+// (BL 2.4.2). Algorithm, one step (rho_a is the integrator's current density):
+//   1. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts     BL (60)
+//   2. sweep: d rho_a/dt = -rho_a div v_a  and (if mu > 0) grad v_a     BL (4), (22)
+//   3. sweep: a_a = g + pressure force BL (20) + viscous BL (24) + artificial viscosity
+#pragma once
+
+#include "flume/equations/continuity_density_bl4.hpp"
+#include "flume/equations/force_bonet_lok_20.hpp"
+#include "flume/equations/velocity_gradient_bl22.hpp"
+#include "flume/equations/viscosity_artificial_monaghan.hpp"
+#include "flume/equations/viscosity_bonet_lok_24.hpp"
+#include "flume/schemes/common_steps.hpp"
+#include "flume/schemes/scheme.hpp"
+
+namespace flume {
+
+template <int D, class Kernel>
+class ContinuityScheme final : public Scheme<D> {
+ public:
+  explicit ContinuityScheme(Physics<D> phys) : phys_(std::move(phys)) {}
+  double support() const override { return Kernel::support; }
+  bool evolves_density() const override { return true; }
+
+  void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
+                     const Halo<D>& halo) const override {
+    update_pressure(ps, phys_, halo);
+
+    ContinuityDensityBL4<D> continuity{ps};
+    if (phys_.mu > 0.0) {
+      VelocityGradientBL22<D> gradient{ps};
+      sweep<D, Kernel>(nl, ps, continuity, gradient);
+      halo.update_velocity_gradient(ps);
+    } else {
+      sweep<D, Kernel>(nl, ps, continuity);
+    }
+
+    start_accelerations(ps, phys_);
+    ForceBonetLok20<D> pressure{ps};
+    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
+    if (phys_.mu > 0.0) {
+      ViscosityBonetLok24<D> viscous{ps, phys_.mu};
+      sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
+    } else {
+      sweep<D, Kernel>(nl, ps, pressure, artificial);
+    }
+  }
+
+ private:
+  Physics<D> phys_;
+};
+
+}  // namespace flume

@@ -1,0 +1,69 @@
+#include "flume/schemes/registry.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "flume/core/error.hpp"
+#include "flume/equations/force_bonet_lok_20.hpp"
+#include "flume/equations/force_bonet_lok_7.hpp"
+#include "flume/schemes/continuity_scheme.hpp"
+#include "flume/schemes/summation_scheme.hpp"
+
+namespace flume {
+
+namespace {
+const std::map<std::string, SchemeRows>& presets() {
+  static const std::map<std::string, SchemeRows> table{
+      {"standard", {"summation", "bl7"}},
+      {"continuity", {"continuity", "bl20"}},
+      {"inconsistent", {"summation", "bl20"}},
+  };
+  return table;
+}
+}  // namespace
+
+std::optional<SchemeRows> preset_rows(const std::string& preset) {
+  auto it = presets().find(preset);
+  if (it == presets().end()) return std::nullopt;
+  return it->second;
+}
+
+const std::vector<std::string>& preset_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [k, v] : presets())
+      n.push_back(k);
+    return n;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& scheme_combinations() {
+  static const std::vector<std::string> combos{"summation+bl7", "summation+bl20",
+                                               "continuity+bl20"};
+  return combos;
+}
+
+template <int D>
+std::unique_ptr<Scheme<D>> make_scheme(const SchemeRows& rows, KernelKind kernel,
+                                       const Physics<D>& phys) {
+  return with_kernel<D>(kernel, [&](auto k) -> std::unique_ptr<Scheme<D>> {
+    using K = decltype(k);
+    if (rows.density == "summation" && rows.force == "bl7")
+      return std::make_unique<SummationScheme<D, K, ForceBonetLok7>>(phys);
+    if (rows.density == "summation" && rows.force == "bl20")
+      return std::make_unique<SummationScheme<D, K, ForceBonetLok20>>(phys);
+    if (rows.density == "continuity" && rows.force == "bl20")
+      return std::make_unique<ContinuityScheme<D, K>>(phys);
+    throw InputError(fmt::format("no scheme combines density '{}' with force '{}'; available: {}",
+                                 rows.density, rows.force, fmt::join(scheme_combinations(), ", ")));
+  });
+}
+
+template std::unique_ptr<Scheme<2>> make_scheme<2>(const SchemeRows&, KernelKind,
+                                                   const Physics<2>&);
+template std::unique_ptr<Scheme<3>> make_scheme<3>(const SchemeRows&, KernelKind,
+                                                   const Physics<3>&);
+
+}  // namespace flume

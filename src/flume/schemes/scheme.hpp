@@ -1,0 +1,30 @@
+// A scheme turns the particle state into rates: accelerations and, when it evolves density,
+// density rates. It is an ordered list of groups (fused neighbour sweeps) with the ghost
+// refreshes between them; its concrete files read like the algorithm in the paper.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "flume/boundaries/halo.hpp"
+#include "flume/core/particle_set.hpp"
+#include "flume/neighbors/neighbor_list.hpp"
+#include "flume/schemes/physics.hpp"
+
+namespace flume {
+
+template <int D>
+class Scheme {
+ public:
+  virtual ~Scheme() = default;
+  // Kernel support radius in units of h (2 for the cubic spline, 3 for the quintic...).
+  virtual double support() const = 0;
+  // True when rho is integrated in time (continuity); false when it is recomputed (summation).
+  virtual bool evolves_density() const = 0;
+  // Fills ps.a (and ps.drho, or ps.rho) of the real particles. The ghosts are appended to ps
+  // and nl holds the neighbours of the real particles; halo refreshes the ghosts between groups.
+  virtual void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
+                             const Halo<D>& halo) const = 0;
+};
+
+}  // namespace flume

@@ -1,0 +1,56 @@
+// Schemes with the summation density BL (1):
+//   preset "standard"     = BL (1) + force BL (7)  (variationally consistent, BL 2.4.1);
+//   preset "inconsistent" = BL (1) + force BL (8) with "+" (= BL (20)): the mismatched pair of
+//                           BL Fig 10 (antisymmetric, so it still keeps linear momentum).
+// Algorithm, one step:
+//   1. sweep: rho_a = sum_b m_b W_ab                       BL (1)
+//   2. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts  BL (60)
+//   3. sweep (if mu > 0): grad v_a                          BL (22)
+//   4. sweep: a_a = g + pressure force + viscous + artificial viscosity
+#pragma once
+
+#include "flume/equations/density_summation.hpp"
+#include "flume/equations/velocity_gradient_bl22.hpp"
+#include "flume/equations/viscosity_artificial_monaghan.hpp"
+#include "flume/equations/viscosity_bonet_lok_24.hpp"
+#include "flume/schemes/common_steps.hpp"
+#include "flume/schemes/scheme.hpp"
+
+namespace flume {
+
+template <int D, class Kernel, template <int> class Force>
+class SummationScheme final : public Scheme<D> {
+ public:
+  explicit SummationScheme(Physics<D> phys) : phys_(std::move(phys)) {}
+  double support() const override { return Kernel::support; }
+  bool evolves_density() const override { return false; }
+
+  void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
+                     const Halo<D>& halo) const override {
+    DensitySummation<D> density{ps};
+    sweep<D, Kernel>(nl, ps, density);
+    halo.update_scalar(ps, ps.rho);
+    update_pressure(ps, phys_, halo);
+
+    if (phys_.mu > 0.0) {
+      VelocityGradientBL22<D> gradient{ps};
+      sweep<D, Kernel>(nl, ps, gradient);
+      halo.update_velocity_gradient(ps);
+    }
+
+    start_accelerations(ps, phys_);
+    Force<D> pressure{ps};
+    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
+    if (phys_.mu > 0.0) {
+      ViscosityBonetLok24<D> viscous{ps, phys_.mu};
+      sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
+    } else {
+      sweep<D, Kernel>(nl, ps, pressure, artificial);
+    }
+  }
+
+ private:
+  Physics<D> phys_;
+};
+
+}  // namespace flume

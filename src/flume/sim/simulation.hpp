@@ -1,0 +1,59 @@
+// One running simulation: particles, scheme, walls, integrator and neighbour search, advanced
+// step by step. No I/O here: the runner decides what to write and when.
+// Each step: (re-sort) -> ghosts -> neighbours -> scheme's groups -> leap-frog -> checks.
+#pragma once
+
+#include <memory>
+
+#include "flume/boundaries/box_walls.hpp"
+#include "flume/integrators/leapfrog.hpp"
+#include "flume/neighbors/cell_list.hpp"
+#include "flume/schemes/scheme.hpp"
+
+namespace flume {
+
+template <int D>
+struct SimulationConfig {
+  double cfl = 0.3;       // Courant number of BL (63)
+  double fixed_dt = 0.0;  // s; 0 means the CFL rule
+  int resort_every = 25;  // steps between re-sorting real particles by cell (memory locality)
+};
+
+template <int D>
+class Simulation {
+ public:
+  Simulation(ParticleSet<D> particles, BoxWalls<D> walls, std::unique_ptr<Scheme<D>> scheme,
+             Physics<D> physics, SimulationConfig<D> config);
+
+  // Advances one step, never beyond max_dt. Throws SimulationError on NaN, non-positive density
+  // or a particle leaving the domain; the state is then that of the failed step.
+  void step(double max_dt);
+
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  double last_dt() const { return last_dt_; }
+  const ParticleSet<D>& particles() const { return ps_; }
+  const Physics<D>& physics() const { return phys_; }
+  std::size_t ghosts() const { return halo_.size(); }
+
+ private:
+  void check_state() const;
+
+  ParticleSet<D> ps_;
+  BoxWalls<D> walls_;
+  std::unique_ptr<Scheme<D>> scheme_;
+  Physics<D> phys_;
+  SimulationConfig<D> config_;
+  LeapFrog<D> integrator_;
+  Halo<D> halo_;
+  CellList<D> cells_;
+  NeighborList neighbors_;
+  double time_ = 0.0;
+  double last_dt_ = 0.0;
+  long steps_ = 0;
+};
+
+extern template class Simulation<2>;
+extern template class Simulation<3>;
+
+}  // namespace flume
