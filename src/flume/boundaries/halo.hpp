@@ -42,10 +42,15 @@ class Halo {
       ps.v_half[i] = mul(mp.vscale, ps.v_half[s]);
       ps.m[i] = ps.m[s];
       ps.rho[i] = ps.rho[s];
-      ps.rho_half[i] = ps.rho_half[s];
       ps.h[i] = ps.h[s];
       ps.p[i] = ps.p[s];
     }
+  }
+
+  // Maps a velocity field (v or v_half) from the sources to their ghosts.
+  void update_velocity(const ParticleSet<D>& ps, std::vector<Vec<D>>& f) const {
+    for (std::size_t g = 0; g < maps_.size(); ++g)
+      f[ps.n_real + g] = mul(maps_[g].vscale, f[maps_[g].source]);
   }
 
   // Copies a scalar field (density, pressure, ...) from the sources to their ghosts.
@@ -56,7 +61,8 @@ class Halo {
 
   // The ghost's velocity field is v'(x) = P v(S^-1 (x - t)), so its gradient is P G S
   // (S = S^-1 for +-1 entries). For a free-slip mirror (P = S) this flips the shear
-  // components, so the wall carries no shear stress; for no-slip (P = -I) it keeps them.
+  // components, so the wall carries no shear stress; for no-slip (P = -I) the wall-normal
+  // derivative of the tangential velocity keeps its sign (du/dy is continuous: wall shear).
   void update_velocity_gradient(ParticleSet<D>& ps) const {
     for (std::size_t g = 0; g < maps_.size(); ++g) {
       const auto& mp = maps_[g];

@@ -227,6 +227,13 @@ toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
   auto* eos = t["eos"].as_table();
   eos->insert_or_assign("bulk_modulus", spec.bulk_modulus);
   eos->insert_or_assign("sound_speed", spec.sound_speed);
+  // References are found relative to the case file; the resolved file lives elsewhere (the run
+  // directory), so it names them by absolute path.
+  if (auto* curves = t.at_path("validation.curves").as_array()) {
+    for (std::size_t c = 0; c < curves->size() && c < spec.curves.size(); ++c)
+      curves->get(c)->as_table()->insert_or_assign(
+          "reference", std::filesystem::absolute(spec.curves[c].reference).lexically_normal().string());
+  }
   return t;
 }
 

@@ -31,8 +31,7 @@ struct ParticleSet {
   std::vector<double> drho;  // density rate, kg/(m^3 s)
 
   // --- integrator state carried between steps (leap-frog staggered values) ---
-  std::vector<V> v_half;         // v^{n-1/2}, m/s
-  std::vector<double> rho_half;  // rho^{n-1/2}, kg/m^3
+  std::vector<V> v_half;  // staggered velocity v^{n+1/2} (after a step) / v^0 (at start), m/s
 
   std::size_t n_real = 0;  // owned particles: indices [0, n_real); ghosts follow
 
@@ -53,7 +52,6 @@ struct ParticleSet {
     f(a);
     f(drho);
     f(v_half);
-    f(rho_half);
   }
 
   void resize(std::size_t n) {
@@ -74,7 +72,6 @@ struct ParticleSet {
     v_half[i] = vel;
     m[i] = mass;
     rho[i] = density;
-    rho_half[i] = density;
     h[i] = smoothing;
     n_real = i + 1;
   }

@@ -13,14 +13,18 @@ namespace flume {
 namespace {
 // A grid larger than this means particles are spread absurdly far apart (a particle escaped):
 // refuse rather than allocate gigabytes.
-constexpr std::size_t kMaxCells = std::size_t{1} << 27;
+constexpr std::size_t kMaxCells = std::size_t{1} << 24;
+// Cells are this much wider than the cut-off, so that rounding in (x - origin) / edge can never
+// put two points closer than the cut-off into cells two apart (the rounding error of the scaled
+// coordinate is a few ulps of at most 2^24, far below 1e-6).
+constexpr double kEdgeMargin = 1.0 + 1e-6;
 }  // namespace
 
 template <int D>
 std::size_t CellList<D>::cell_of(const Vec<D>& p) const {
   std::size_t idx = 0;
   for (int k = D - 1; k >= 0; --k) {
-    const double s = (p[k] - origin_[k]) / cutoff_;
+    const double s = (p[k] - origin_[k]) / edge_;
     auto c = static_cast<std::size_t>(std::max(0.0, s));
     c = std::min(c, dims_[k] - 1);
     idx = idx * dims_[k] + c;
@@ -32,6 +36,7 @@ template <int D>
 void CellList<D>::build(std::span<const Vec<D>> x, double cutoff) {
   if (!(cutoff > 0.0)) throw SimulationError("cell list: cutoff must be positive");
   cutoff_ = cutoff;
+  edge_ = cutoff * kEdgeMargin;
   Vec<D> lo, hi;
   for (int k = 0; k < D; ++k) {
     lo[k] = std::numeric_limits<double>::max();
@@ -48,7 +53,7 @@ void CellList<D>::build(std::span<const Vec<D>> x, double cutoff) {
   for (int k = 0; k < D; ++k) {
     if (x.empty()) lo[k] = hi[k] = 0.0;
     origin_[k] = lo[k];
-    const double extent = (hi[k] - lo[k]) / cutoff;
+    const double extent = (hi[k] - lo[k]) / edge_;
     if (extent > static_cast<double>(kMaxCells))
       throw SimulationError(
           fmt::format("cell list: particles spread over {:.3g} cut-off lengths "

@@ -32,6 +32,7 @@ class CellList {
   std::size_t cell_of(const Vec<D>& p) const;
 
   double cutoff_ = 0.0;
+  double edge_ = 0.0;  // cell edge, a hair wider than the cut-off
   Vec<D> origin_{};
   std::array<std::size_t, D> dims_{};
   std::vector<std::size_t> cell_start_;      // size cells + 1

@@ -1,8 +1,10 @@
 // Preset "continuity": continuity density BL (2)-(4) + force BL (20), variationally consistent
-// (BL 2.4.2). Algorithm, one step (rho_a is the integrator's current density):
-//   1. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts     BL (60)
-//   2. sweep: d rho_a/dt = -rho_a div v_a  and (if mu > 0) grad v_a     BL (4), (22)
+// (BL 2.4.2). Algorithm, one step (rho_a is the integrator's density at the integer time):
+//   1. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts                BL (60)
+//   2. sweep (if mu > 0): grad v_a                                         BL (22)
 //   3. sweep: a_a = g + pressure force BL (20) + viscous BL (24) + artificial viscosity
+//   -- leap-frog kick --
+//   4. sweep: d rho_a/dt = -rho_a div v_a with v^{n+1/2}                   BL (2), (4)
 #pragma once
 
 #include "flume/equations/continuity_density_bl4.hpp"
@@ -22,17 +24,14 @@ class ContinuityScheme final : public Scheme<D> {
   double support() const override { return Kernel::support; }
   bool evolves_density() const override { return true; }
 
-  void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
-                     const Halo<D>& halo) const override {
+  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+                             const Halo<D>& halo) const override {
     update_pressure(ps, phys_, halo);
 
-    ContinuityDensityBL4<D> continuity{ps};
     if (phys_.mu > 0.0) {
       VelocityGradientBL22<D> gradient{ps};
-      sweep<D, Kernel>(nl, ps, continuity, gradient);
+      sweep<D, Kernel>(nl, ps, gradient);
       halo.update_velocity_gradient(ps);
-    } else {
-      sweep<D, Kernel>(nl, ps, continuity);
     }
 
     start_accelerations(ps, phys_);
@@ -44,6 +43,13 @@ class ContinuityScheme final : public Scheme<D> {
     } else {
       sweep<D, Kernel>(nl, ps, pressure, artificial);
     }
+  }
+
+  void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
+                            const Halo<D>& halo) const override {
+    halo.update_velocity(ps, ps.v_half);
+    ContinuityDensityBL4<D> continuity{ps, ps.v_half};
+    sweep<D, Kernel>(nl, ps, continuity);
   }
 
  private:

@@ -21,10 +21,15 @@ class Scheme {
   virtual double support() const = 0;
   // True when rho is integrated in time (continuity); false when it is recomputed (summation).
   virtual bool evolves_density() const = 0;
-  // Fills ps.a (and ps.drho, or ps.rho) of the real particles. The ghosts are appended to ps
-  // and nl holds the neighbours of the real particles; halo refreshes the ghosts between groups.
-  virtual void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
-                             const Halo<D>& halo) const = 0;
+  // Fills ps.a of the real particles (and ps.rho, for a summation density). The ghosts are
+  // appended to ps and nl holds the neighbours of the real particles; halo refreshes the ghosts
+  // between groups.
+  virtual void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+                                     const Halo<D>& halo) const = 0;
+  // For schemes that evolve density: fills ps.drho from the positions x^n and the velocities
+  // v^{n+1/2} after the leap-frog kick (leapfrog.hpp says why). Ghost v_half is refreshed here.
+  virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const NeighborList& /*nl*/,
+                                    const Halo<D>& /*halo*/) const {}
 };
 
 }  // namespace flume

@@ -25,7 +25,7 @@ class SummationScheme final : public Scheme<D> {
   double support() const override { return Kernel::support; }
   bool evolves_density() const override { return false; }
 
-  void compute_rates(ParticleSet<D>& ps, const NeighborList& nl,
+  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
                      const Halo<D>& halo) const override {
     DensitySummation<D> density{ps};
     sweep<D, Kernel>(nl, ps, density);

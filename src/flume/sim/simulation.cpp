@@ -41,14 +41,19 @@ void Simulation<D>::step(double max_dt) {
   cells_.build(ps_.x, range);
   cells_.find_neighbors(ps_.x, ps_.n_real, neighbors_);
 
-  scheme_->compute_rates(ps_, neighbors_, halo_);
+  scheme_->compute_accelerations(ps_, neighbors_, halo_);
 
   double dt = config_.fixed_dt > 0.0 ? config_.fixed_dt : cfl_time_step(ps_, phys_, config_.cfl);
   dt = std::min(dt, max_dt);
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw SimulationError(
         fmt::format("time step collapsed to {:.3g} s at t = {:.6g} s", dt, time_));
-  integrator_.advance(ps_, dt, scheme_->evolves_density());
+  integrator_.kick(ps_, dt);
+  if (scheme_->evolves_density()) {
+    scheme_->compute_density_rate(ps_, neighbors_, halo_);
+    integrator_.advance_density(ps_, dt);
+  }
+  integrator_.drift(ps_, dt);
   ps_.drop_ghosts();
   walls_.reflect_crossings(ps_, range);
   time_ += dt;

@@ -7,7 +7,7 @@
 namespace flume {
 
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
-  if (xs.empty() || x < xs.front() || x > xs.back())
+  if (xs.empty() || !(x >= xs.front() && x <= xs.back()))
     throw std::out_of_range("interpolate: x outside the series");
   auto it = std::upper_bound(xs.begin(), xs.end(), x);
   if (it == xs.end()) return ys.back();
@@ -28,12 +28,14 @@ std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::v
   }
   std::vector<CurvePoint> out;
   for (std::size_t k = 0; k < ref_x.size(); ++k) {
-    if (xs.empty() || ref_x[k] < xs.front() || ref_x[k] > xs.back()) continue;
+    if (xs.empty() || !(ref_x[k] >= xs.front() && ref_x[k] <= xs.back())) continue;
     CurvePoint p;
     p.x = ref_x[k];
     p.reference = ref_y[k];
     p.value = interpolate(xs, ys, p.x);
-    p.error = std::abs(p.value - p.reference) / std::abs(p.reference);
+    // Relative error; absolute where the reference is zero (no relative scale there).
+    const double diff = std::abs(p.value - p.reference);
+    p.error = p.reference != 0.0 ? diff / std::abs(p.reference) : diff;
     out.push_back(p);
   }
   return out;

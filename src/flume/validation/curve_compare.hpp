@@ -11,7 +11,7 @@ struct CurvePoint {
   double x = 0.0;          // reference abscissa (dimensionless time)
   double reference = 0.0;  // reference value
   double value = 0.0;      // flume's value, same scaling
-  double error = 0.0;      // |value - reference| / |reference|
+  double error = 0.0;      // |value - reference| / |reference| (absolute if reference is 0)
 };
 
 // t, y: the probe series (seconds, metres). ref_x, ref_y: the reference, dimensionless.

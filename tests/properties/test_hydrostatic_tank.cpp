@@ -1,0 +1,78 @@
+// Still water in a tank (W-3 of spec/cases.md, the issue's acceptance test): started from the
+// exact hydrostatic density of the Tait EOS, the water must stay at rest with a bottom pressure
+// within 2 % of rho0 g H. Checked for the continuity preset: with the summation density BL (1)
+// the particles at a free surface miss half their kernel support, their density falls well below
+// rho0 and the Tait EOS puts them in strong tension, so still water is not an equilibrium of the
+// standard preset (the surface layer collapses); that is a property of BL (1), not a bug.
+#include <gtest/gtest.h>
+
+#include "flume/case/build_simulation.hpp"
+#include "support/small_cases.hpp"
+
+namespace flume {
+namespace {
+
+// A tank 0.2 m wide with water H = 0.1 m deep, dx = 5 mm (40 x 20 particles), free-slip walls,
+// mu = 0.5 Pa s to damp the start-up acoustic waves, 0.5 s of simulated time (about 35 acoustic
+// crossings of the depth at c0 = 14 m/s).
+constexpr double kH = 0.1;
+constexpr double kDx = 0.005;
+
+std::string tank_toml(const std::string& preset) {
+  return fmt::format(R"(
+[case]
+name = "still_water"
+end_time = 0.5
+[particles]
+spacing = {}
+[scheme]
+preset = "{}"
+[fluid]
+viscosity = 0.5
+[domain]
+min = [0.0, 0.0]
+max = [0.2, 0.2]
+[[fluid_blocks]]
+min = [0.0, 0.0]
+max = [0.2, {}]
+)",
+                     kDx, preset, kH);
+}
+
+class HydrostaticTank : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
+  const auto spec = test::spec_from(tank_toml(GetParam()));
+  auto sim = build_simulation<2>(spec);
+  const double g = 9.81, rho0 = spec.rho0;
+  // Bottom pressure as a gauge reads it: each particle's pressure in the three bottom rows
+  // extrapolated to the floor with the hydrostatic gradient, averaged over the rows (the SPH
+  // pressure of a continuity-density scheme carries a few-percent row-to-row noise that a kernel-
+  // sized gauge smooths out) and over the last 0.1 s (sampled every step: the start-up acoustic
+  // oscillation, period 4H/c0 = 0.03 s, averages out).
+  double sum = 0.0, vmax = 0.0;
+  long count = 0;
+  while (sim.time() < spec.end_time) {
+    sim.step(spec.end_time - sim.time());
+    if (sim.time() < spec.end_time - 0.1) continue;
+    const auto& ps = sim.particles();
+    for (std::size_t i = 0; i < ps.n_real; ++i) {
+      vmax = std::max(vmax, norm(ps.v[i]));
+      if (ps.x[i][1] < 3 * kDx && ps.x[i][0] > 0.02 && ps.x[i][0] < 0.18) {
+        sum += ps.p[i] + rho0 * g * ps.x[i][1];
+        ++count;
+      }
+    }
+  }
+  ASSERT_GT(count, 1000);
+  const double p_bottom = sum / static_cast<double>(count);
+  // The issue's tolerance: 2 % of rho0 g H.
+  EXPECT_NEAR(p_bottom, rho0 * g * kH, 0.02 * rho0 * g * kH) << GetParam();
+  // At rest: spurious velocities far below the free-fall speed sqrt(2 g H) = 1.4 m/s.
+  EXPECT_LT(vmax, 0.05 * std::sqrt(2 * g * kH)) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, HydrostaticTank, ::testing::Values("continuity"));
+
+}  // namespace
+}  // namespace flume

@@ -1,0 +1,109 @@
+// The case-file reader: a valid file resolves with every default; bad input is rejected with
+// flume::InputError and one line naming the file, the key and what is allowed.
+#include <gtest/gtest.h>
+
+#include "flume/core/error.hpp"
+#include "support/small_cases.hpp"
+
+namespace flume {
+namespace {
+
+const std::string kValid = test::dam_break_toml("continuity", 10, 0.01);
+
+// The message of the InputError that reading `toml` (with overrides) throws.
+std::string error_of(const std::string& toml, const std::vector<std::string>& sets = {}) {
+  try {
+    test::spec_from(toml, sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+void expect_one_line_with(const std::string& msg, std::initializer_list<std::string> parts) {
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_EQ(msg.rfind("test.toml", 0), 0u) << "must start with the file name: " << msg;
+  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+}
+
+TEST(CaseReader, ValidFileResolvesEveryDefault) {
+  const auto spec = test::spec_from(kValid);
+  EXPECT_EQ(spec.name, "small_dam_break");
+  EXPECT_EQ(spec.density, "continuity");
+  EXPECT_EQ(spec.force, "bl20");
+  EXPECT_EQ(spec.kernel, "cubic_spline");
+  // c0 = 10 sqrt(2 g a) (BL (66)), kappa = rho0 c0^2 / gamma.
+  const double c0 = 10.0 * std::sqrt(2.0 * 9.81 * 0.05715);
+  EXPECT_NEAR(spec.sound_speed, c0, 1e-12 * c0);
+  EXPECT_NEAR(spec.bulk_modulus, 1000.0 * c0 * c0 / 7.0, 1e-9 * spec.bulk_modulus);
+  for (const char* key : {"h_over_dx", "cfl", "speed_ratio", "floor_layer", "snapshot_interval",
+                          "x_max", "bulk_modulus", "density = 'continuity'"})
+    EXPECT_NE(spec.resolved_toml.find(key), std::string::npos) << key;
+}
+
+TEST(CaseReader, ResolvedFileReadsBackToTheSameSpec) {
+  const auto spec = test::spec_from(kValid);
+  const auto again = test::spec_from(spec.resolved_toml);
+  EXPECT_EQ(again.resolved_toml, spec.resolved_toml);
+  EXPECT_EQ(again.bulk_modulus, spec.bulk_modulus);
+}
+
+TEST(CaseReader, PresetRowsAndOverrides) {
+  auto spec = test::spec_from(kValid, {"scheme.preset=standard", "particles.spacing=0.002",
+                                       "case.end_time=0.5", "fluid_blocks[0].velocity=[1.0, 0.0]"});
+  EXPECT_EQ(spec.density, "summation");
+  EXPECT_EQ(spec.force, "bl7");
+  EXPECT_EQ(spec.spacing, 0.002);
+  EXPECT_EQ(spec.end_time, 0.5);
+  EXPECT_EQ(spec.blocks[0].velocity[0], 1.0);
+  spec = test::spec_from(kValid, {"scheme.preset=inconsistent"});
+  EXPECT_EQ(spec.density + "+" + spec.force, "summation+bl20");
+}
+
+TEST(CaseReader, UnknownKeyIsAnError) {
+  expect_one_line_with(error_of(kValid + "\n[output.extra]\nfoo = 1\n"),
+                       {"output.extra", "unknown key"});
+  std::string bad = kValid;
+  bad.replace(bad.find("[scheme]"), 8, "[scheme]\nflavour = \"x\"");
+  expect_one_line_with(error_of(bad), {"scheme.flavour", "unknown key", "preset"});
+  expect_one_line_with(error_of(kValid + "\n[solver]\nx = 1\n"), {"solver", "unknown key"});
+}
+
+TEST(CaseReader, WrongTypeIsAnError) {
+  std::string bad = kValid;
+  bad.replace(bad.find("preset = "), 9, "preset = 3 #");
+  expect_one_line_with(error_of(bad), {"scheme.preset", "must be a string"});
+  expect_one_line_with(error_of(kValid, {"particles.spacing=\"fine\""}),
+                       {"particles.spacing", "must be a number"});
+  expect_one_line_with(error_of(kValid, {"fluid.gravity=[1.0]"}),
+                       {"fluid.gravity", "array of 2 numbers"});
+}
+
+TEST(CaseReader, OutOfRangeValueIsAnError) {
+  expect_one_line_with(error_of(kValid, {"particles.spacing=-0.001"}),
+                       {"particles.spacing", "must be > 0"});
+  expect_one_line_with(error_of(kValid, {"scheme.h_over_dx=9"}), {"scheme.h_over_dx", "[0.5, 4]"});
+  expect_one_line_with(error_of(kValid, {"scheme.kernel=spline"}),
+                       {"scheme.kernel", "cubic_spline", "wendland_c2"});
+  expect_one_line_with(error_of(kValid, {"scheme.preset=csph9"}), {"scheme.preset", "standard"});
+  expect_one_line_with(error_of(kValid, {"boundaries.y_min=sticky"}),
+                       {"boundaries.y_min", "no_slip"});
+  expect_one_line_with(error_of(kValid, {"case.dimension=4"}), {"case.dimension", "2 or 3"});
+  expect_one_line_with(error_of(kValid, {"fluid_blocks[0].max=[0.5, 0.05]"}),
+                       {"fluid_blocks[0]", "inside the domain"});
+  expect_one_line_with(error_of(kValid, {"scheme.density=continuity", "scheme.force=bl7"}),
+                       {"scheme.force", "continuity+bl20"});
+}
+
+TEST(CaseReader, BadOverridesAndSyntax) {
+  expect_one_line_with(error_of(kValid, {"scheme.flux=3"}), {"scheme.flux", "unknown key"});
+  expect_one_line_with(error_of(kValid, {"fluid_blocks[3].min=[0.0, 0.0]"}),
+                       {"fluid_blocks", "unknown key"});
+  EXPECT_NE(error_of(kValid, {"novalue"}).find("KEY=VALUE"), std::string::npos);
+  expect_one_line_with(error_of("[case\nname = 1"), {"TOML syntax error"});
+  expect_one_line_with(error_of("[case]\nname = \"x\"\n"), {"fluid_blocks", "at least one"});
+  expect_one_line_with(error_of("[case]\nname = \"\"\n"), {"case.name", "required"});
+}
+
+}  // namespace
+}  // namespace flume

@@ -1,0 +1,143 @@
+// The flume executable as a user sees it: exit status 0/1/2, one clear line for bad input, and
+// the run directory of spec/contract.md, kept when the simulation fails.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "flume/io/csv_table.hpp"
+#include "support/small_cases.hpp"
+
+namespace flume {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("flume_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result flume(const std::string& args) {
+    const std::string cmd = std::string(FLUME_BINARY) + " " + args + " > " +
+                            (dir_ / "stdout").string() + " 2> " + (dir_ / "stderr").string();
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir_ / "stdout");
+    r.err = slurp(dir_ / "stderr");
+    return r;
+  }
+  fs::path write_case(const std::string& toml) {
+    const auto p = dir_ / "case.toml";
+    std::ofstream(p) << toml;
+    return p;
+  }
+  fs::path dir_;
+};
+
+TEST_F(Cli, RunWritesTheRunDirectory) {
+  const auto file = write_case(test::dam_break_toml("continuity", 8, 0.02));
+  const auto out = dir_ / "run";
+  const auto r = flume("run " + file.string() + " --out " + out.string() +
+                       " --set output.snapshot_interval=0.01 --threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"case.toml", "diagnostics.csv", "probes.csv", "summary.json", "log.txt",
+                        "snapshots/snapshots.pvd", "snapshots/snapshot_00000.vtu"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto diag = io::read_csv(out / "diagnostics.csv");
+  for (const char* c : {"time", "step", "dt", "particles", "mass", "momentum_x", "momentum_y",
+                        "angular_momentum", "kinetic_energy", "potential_energy",
+                        "internal_energy", "rho_min", "rho_max"})
+    EXPECT_NO_THROW(diag.column(c)) << c;
+  const auto mass = diag.column("mass");
+  // Particles keep their masses: total mass constant to round-off of the serial sum.
+  for (double m : mass) EXPECT_NEAR(m, mass.front(), 1e-14 * mass.front());
+  const auto probes = io::read_csv(out / "probes.csv");
+  EXPECT_EQ(probes.columns, (std::vector<std::string>{"time", "surge_front", "column_height"}));
+  const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_TRUE(summary["error"].is_null());
+  EXPECT_EQ(summary["particles"], 64);
+  EXPECT_EQ(summary["threads"], 1);
+  EXPECT_EQ(summary["ranks"], 1);
+  for (const char* k : {"case", "steps", "simulated_time", "wall_seconds",
+                        "particle_steps_per_second", "flume_version"})
+    EXPECT_TRUE(summary.contains(k)) << k;
+  EXPECT_NEAR(summary["simulated_time"].get<double>(), 0.02, 1e-12);
+  // No temporary file is left behind by the atomic writes.
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST_F(Cli, ResolvedCaseRepeatsTheRunExactly) {
+  const auto file = write_case(test::dam_break_toml("standard", 8, 0.01));
+  ASSERT_EQ(flume("run " + file.string() + " --quiet --out " + (dir_ / "a").string()).status, 0);
+  ASSERT_EQ(flume("run " + (dir_ / "a" / "case.toml").string() + " --quiet --out " +
+                  (dir_ / "b").string())
+                .status,
+            0);
+  EXPECT_EQ(slurp(dir_ / "a" / "diagnostics.csv"), slurp(dir_ / "b" / "diagnostics.csv"));
+  EXPECT_EQ(slurp(dir_ / "a" / "probes.csv"), slurp(dir_ / "b" / "probes.csv"));
+}
+
+TEST_F(Cli, BadInputExitsWithTwoAndOneLine) {
+  const auto file = write_case(test::dam_break_toml("continuity", 8, 0.01));
+  for (const std::string args :
+       {"--set scheme.bogus=1", "--set particles.spacing=-1", "--set scheme.cfl=\\\"x\\\""}) {
+    const auto r = flume("run " + file.string() + " " + args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(flume("run " + (dir_ / "missing.toml").string()).status, 2);
+  EXPECT_EQ(flume("run").status, 2);
+  EXPECT_EQ(flume("frobnicate").status, 2);
+}
+
+TEST_F(Cli, FailedSimulationExitsWithOneAndKeepsItsOutput) {
+  // An open floor: the water falls out of the domain, a lost particle.
+  const auto file = write_case(test::dam_break_toml("continuity", 8, 0.5));
+  const auto out = dir_ / "run";
+  const auto r = flume("run " + file.string() + " --out " + out.string() +
+                       " --set boundaries.y_min=open --set output.interval=0.01");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("lost"), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_NE(summary["error"].get<std::string>().find("lost"), std::string::npos);
+  EXPECT_GT(io::read_csv(out / "diagnostics.csv").rows.size(), 2u);
+  EXPECT_NE(slurp(out / "log.txt").find("failed"), std::string::npos);
+}
+
+TEST_F(Cli, CasesListsTheBundledDamBreak) {
+  const auto r = flume("cases");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("dam_break"), std::string::npos) << r.out;
+  const auto v = flume("--version");
+  EXPECT_EQ(v.status, 0);
+  EXPECT_NE(v.out.find("flume"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace flume

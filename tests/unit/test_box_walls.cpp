@@ -1,0 +1,492 @@
+// Unit tests of the mirror-wall box (src/flume/boundaries/box_walls.hpp) and the ghost halo
+// (src/flume/boundaries/halo.hpp): which ghosts a particle gets near walls, edges and corners,
+// where they are and how their velocities map for free-slip and no-slip walls; how the halo
+// copies and refreshes ghost fields, including the transformed velocity gradient P G S; and the
+// "put back" of particles that stepped across a wall.
+//
+// Tolerances: a mirror image is x' = -x + 2 w. For a wall at 0 that is an exact negation; for a
+// wall at 1 the subtraction 2 - x rounds once, hence EXPECT_DOUBLE_EQ (4 ulp) there. Velocity and
+// gradient maps multiply by +-1 and are exact.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "flume/boundaries/box_walls.hpp"
+#include "flume/boundaries/halo.hpp"
+#include "flume/core/particle_set.hpp"
+#include "flume/core/vec.hpp"
+
+namespace flume {
+namespace {
+
+template <int D>
+BoxWalls<D> unit_box(WallKind all) {
+  BoxWalls<D> b;
+  for (int k = 0; k < D; ++k) {
+    b.lo[k] = 0.0;
+    b.hi[k] = 1.0;
+    b.kind[k] = {all, all};
+  }
+  return b;
+}
+
+// A particle with distinct, recognisable values in every field the halo copies.
+template <int D>
+void add_particle(ParticleSet<D>& ps, const Vec<D>& x, const Vec<D>& v, const Vec<D>& v_half) {
+  const auto i = static_cast<std::int64_t>(ps.size());
+  ps.add_real(100 + i, x, v, 0.01 * (1.0 + static_cast<double>(i)), 1000.0 + static_cast<double>(i),
+              0.02 + 0.001 * static_cast<double>(i));
+  ps.v_half.back() = v_half;
+  ps.p.back() = 50.0 + static_cast<double>(i);
+}
+
+constexpr double kRange = 0.1;
+
+TEST(BoxWalls, FreeSlipFloorMakesOneMirrorGhost) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.05}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 1u);
+  const auto& g = halo.maps()[0];
+  EXPECT_EQ(g.source, 0u);
+  EXPECT_EQ(g.scale, (Vec<2>{{1.0, -1.0}}));
+  EXPECT_EQ(g.shift, (Vec<2>{{0.0, 0.0}}));
+  EXPECT_EQ(g.vscale, (Vec<2>{{1.0, -1.0}}));
+
+  halo.append_ghosts(ps);
+  ASSERT_EQ(ps.size(), 2u);
+  EXPECT_EQ(ps.n_real, 1u);
+  // Exact: the mirror in the wall y = 0 is a negation.
+  EXPECT_EQ(ps.x[1], (Vec<2>{{0.5, -0.05}}));
+  EXPECT_EQ(ps.v[1], (Vec<2>{{0.3, -0.7}}));
+  EXPECT_EQ(ps.v_half[1], (Vec<2>{{0.2, -0.6}}));
+  EXPECT_EQ(ps.id[1], ps.id[0]);
+  EXPECT_EQ(ps.m[1], ps.m[0]);
+  EXPECT_EQ(ps.rho[1], ps.rho[0]);
+  EXPECT_EQ(ps.p[1], ps.p[0]);
+  EXPECT_EQ(ps.h[1], ps.h[0]);
+  // The real particle is untouched.
+  EXPECT_EQ(ps.x[0], (Vec<2>{{0.5, 0.05}}));
+  EXPECT_EQ(ps.v[0], (Vec<2>{{0.3, 0.7}}));
+}
+
+TEST(BoxWalls, UpperWallsMirrorAboutTheirPlane) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.93, 0.5}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  add_particle<2>(ps, {{0.5, 0.96}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 2u);
+  halo.append_ghosts(ps);
+  // 2 * 1 - x rounds once: 4 ulp.
+  EXPECT_DOUBLE_EQ(ps.x[2][0], 1.07);
+  EXPECT_EQ(ps.x[2][1], 0.5);
+  EXPECT_EQ(ps.v[2], (Vec<2>{{-0.3, 0.7}}));
+  EXPECT_EQ(ps.x[3][0], 0.5);
+  EXPECT_DOUBLE_EQ(ps.x[3][1], 1.04);
+  EXPECT_EQ(ps.v[3], (Vec<2>{{0.3, -0.7}}));
+}
+
+TEST(BoxWalls, CornerParticleGetsTwoSingleAndOneDoubleReflection) {
+  ParticleSet<2> ps;
+  const Vec<2> v{{0.3, 0.7}};
+  add_particle<2>(ps, {{0.05, 0.03}}, v, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 3u);
+  halo.append_ghosts(ps);
+  ASSERT_EQ(ps.size(), 4u);
+  struct Expected {
+    Vec<2> x, v;
+  };
+  const std::vector<Expected> want{
+      {{{-0.05, 0.03}}, {{-0.3, 0.7}}},    // left wall
+      {{{0.05, -0.03}}, {{0.3, -0.7}}},    // floor
+      {{{-0.05, -0.03}}, {{-0.3, -0.7}}},  // both: composition of the two maps
+  };
+  for (const auto& w : want) {
+    int found = 0;
+    for (std::size_t i = 1; i < ps.size(); ++i)
+      if (ps.x[i] == w.x) {
+        ++found;
+        EXPECT_EQ(ps.v[i], w.v) << "ghost at (" << w.x[0] << ", " << w.x[1] << ")";
+      }
+    EXPECT_EQ(found, 1) << "ghost at (" << w.x[0] << ", " << w.x[1] << ")";
+  }
+}
+
+TEST(BoxWalls, NoSlipReversesBothComponents) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.05}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::no_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 1u);
+  EXPECT_EQ(halo.maps()[0].vscale, (Vec<2>{{-1.0, -1.0}}));
+  halo.append_ghosts(ps);
+  EXPECT_EQ(ps.x[1], (Vec<2>{{0.5, -0.05}}));
+  EXPECT_EQ(ps.v[1], (Vec<2>{{-0.3, -0.7}}));
+  EXPECT_EQ(ps.v_half[1], (Vec<2>{{-0.2, -0.6}}));
+}
+
+TEST(BoxWalls, CornerVelocityMapsComposeAcrossWallKinds) {
+  // No-slip left wall (P = -I) and free-slip floor (P = diag(1, -1)).
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.kind[0][0] = WallKind::no_slip;
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 3u);
+  for (const auto& g : halo.maps()) {
+    const bool left = g.scale[0] < 0.0, floor = g.scale[1] < 0.0;
+    Vec<2> want{{1.0, 1.0}};
+    if (left) want = -want;
+    if (floor) want[1] = -want[1];
+    EXPECT_EQ(g.vscale, want) << "left " << left << " floor " << floor;
+  }
+  // Two no-slip walls: (-I)(-I) = I at the corner.
+  const auto noslip = unit_box<2>(WallKind::no_slip);
+  noslip.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 3u);
+  for (const auto& g : halo.maps()) {
+    if (g.scale[0] < 0.0 && g.scale[1] < 0.0) {
+      EXPECT_EQ(g.vscale, (Vec<2>{{1.0, 1.0}}));
+    }
+  }
+}
+
+TEST(BoxWalls, OpenSidesMakeNoGhosts) {
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.kind[1][0] = WallKind::open;  // open floor
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.05}}, {{0.3, 0.7}}, {{0.2, 0.6}});   // near the open floor only
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});  // open floor + left wall
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 1u);
+  EXPECT_EQ(halo.maps()[0].source, 1u);
+  EXPECT_EQ(halo.maps()[0].scale, (Vec<2>{{-1.0, 1.0}}));
+
+  const auto all_open = unit_box<2>(WallKind::open);
+  all_open.build_halo(ps, kRange, halo);
+  EXPECT_EQ(halo.size(), 0u);
+}
+
+TEST(BoxWalls, InteriorParticlesGetNoGhosts) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.5}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  add_particle<2>(ps, {{0.1, 0.5}}, {{0.3, 0.7}}, {{0.2, 0.6}});  // exactly range from a wall
+  add_particle<2>(ps, {{0.11, 0.2}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  EXPECT_EQ(halo.size(), 0u);
+  halo.append_ghosts(ps);
+  EXPECT_EQ(ps.size(), 3u);
+}
+
+TEST(BoxWalls, AtMostOneWallPerAxis) {
+  // A box thinner than twice the range: the particle sees floor and ceiling, and gets one ghost
+  // for each, never a ghost reflected in both (that is not an image of the fluid).
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.hi[1] = 0.15;
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.07}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 2u);
+  halo.append_ghosts(ps);
+  std::vector<double> ys{ps.x[1][1], ps.x[2][1]};
+  std::sort(ys.begin(), ys.end());
+  EXPECT_EQ(ys[0], -0.07);        // exact negation
+  EXPECT_DOUBLE_EQ(ys[1], 0.23);  // 2 * 0.15 - 0.07, rounded: 4 ulp
+}
+
+TEST(BoxWalls, GhostsOrderedBySourceParticle) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});  // 3 ghosts
+  add_particle<2>(ps, {{0.5, 0.5}}, {{0.3, 0.7}}, {{0.2, 0.6}});    // none
+  add_particle<2>(ps, {{0.97, 0.5}}, {{0.3, 0.7}}, {{0.2, 0.6}});   // 1
+  add_particle<2>(ps, {{0.92, 0.95}}, {{0.3, 0.7}}, {{0.2, 0.6}});  // 3
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  std::vector<std::uint32_t> sources;
+  for (const auto& g : halo.maps())
+    sources.push_back(g.source);
+  EXPECT_EQ(sources, (std::vector<std::uint32_t>{0, 0, 0, 2, 3, 3, 3}));
+  // Rebuilding gives the same maps in the same order.
+  Halo<2> again;
+  box.build_halo(ps, kRange, again);
+  ASSERT_EQ(again.size(), halo.size());
+  for (std::size_t g = 0; g < halo.size(); ++g) {
+    EXPECT_EQ(again.maps()[g].scale, halo.maps()[g].scale);
+    EXPECT_EQ(again.maps()[g].shift, halo.maps()[g].shift);
+    EXPECT_EQ(again.maps()[g].vscale, halo.maps()[g].vscale);
+  }
+}
+
+TEST(BoxWalls, ThreeDimensionalCornerGetsSevenGhosts) {
+  ParticleSet<3> ps;
+  const Vec<3> x{{0.05, 0.04, 0.03}};
+  const Vec<3> v{{0.3, 0.7, -0.2}};
+  add_particle<3>(ps, x, v, v);
+  const auto box = unit_box<3>(WallKind::free_slip);
+  Halo<3> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 7u);
+  halo.append_ghosts(ps);
+  // Each non-empty subset of the three walls, once: ghost = (s0 x0, s1 x1, s2 x2) with
+  // velocity (s0 v0, s1 v1, s2 v2) for free slip. Exact (walls at 0).
+  for (int mask = 1; mask < 8; ++mask) {
+    Vec<3> wx, wv;
+    for (int k = 0; k < 3; ++k) {
+      const double s = (mask >> k) & 1 ? -1.0 : 1.0;
+      wx[k] = s * x[k];
+      wv[k] = s * v[k];
+    }
+    int found = 0;
+    for (std::size_t i = 1; i < ps.size(); ++i)
+      if (ps.x[i] == wx) {
+        ++found;
+        EXPECT_EQ(ps.v[i], wv) << "mask " << mask;
+      }
+    EXPECT_EQ(found, 1) << "mask " << mask;
+  }
+  // An edge particle (two walls) gets 3, a face particle 1.
+  ParticleSet<3> edge;
+  add_particle<3>(edge, {{0.05, 0.5, 0.97}}, v, v);
+  add_particle<3>(edge, {{0.5, 0.5, 0.02}}, v, v);
+  box.build_halo(edge, kRange, halo);
+  EXPECT_EQ(halo.size(), 4u);
+}
+
+TEST(BoxWalls, AppendGhostsTwiceDoesNotGrow) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  halo.append_ghosts(ps);
+  const auto first = ps.x;
+  halo.append_ghosts(ps);
+  EXPECT_EQ(ps.size(), 4u);
+  EXPECT_EQ(ps.x, first);
+  ps.drop_ghosts();
+  EXPECT_EQ(ps.size(), 1u);
+}
+
+TEST(BoxWalls, UpdateScalarCopiesFromSources) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  add_particle<2>(ps, {{0.5, 0.97}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  halo.append_ghosts(ps);
+  ps.rho[0] = 1234.5;
+  ps.rho[1] = 987.25;
+  ps.p[0] = -3.0;
+  ps.p[1] = 7.5;
+  halo.update_scalar(ps, ps.rho);
+  halo.update_scalar(ps, ps.p);
+  for (std::size_t g = 0; g < halo.size(); ++g) {
+    const std::size_t s = halo.maps()[g].source;
+    EXPECT_EQ(ps.rho[ps.n_real + g], ps.rho[s]);
+    EXPECT_EQ(ps.p[ps.n_real + g], ps.p[s]);
+  }
+}
+
+TEST(BoxWalls, UpdateVelocityMapsFromSources) {
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.kind[0][0] = WallKind::no_slip;
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  halo.append_ghosts(ps);
+  ps.v_half[0] = Vec<2>{{-1.5, 2.5}};
+  halo.update_velocity(ps, ps.v_half);
+  for (std::size_t g = 0; g < halo.size(); ++g) {
+    const auto& mp = halo.maps()[g];
+    const Vec<2> want{{mp.vscale[0] * -1.5, mp.vscale[1] * 2.5}};
+    EXPECT_EQ(ps.v_half[ps.n_real + g], want) << "ghost " << g;
+  }
+}
+
+// The velocity-gradient map on a floor (y = 0): ghost (grad v)_{kl} = P_k G_kl S_l.
+Mat<2> floor_ghost_gradient(WallKind kind, const Mat<2>& G) {
+  auto box = unit_box<2>(WallKind::open);
+  box.kind[1][0] = kind;
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.05}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  Halo<2> halo;
+  box.build_halo(ps, kRange, halo);
+  EXPECT_EQ(halo.size(), 1u);
+  halo.append_ghosts(ps);
+  ps.grad_v[0] = G;
+  halo.update_velocity_gradient(ps);
+  return ps.grad_v[1];
+}
+
+TEST(BoxWalls, FreeSlipFloorFlipsShearComponentsOfTheGradient) {
+  const double a = 1.5, b = -2.25, c = 0.75, d = 3.0;
+  Mat<2> G;
+  G(0, 0) = a;
+  G(0, 1) = b;
+  G(1, 0) = c;
+  G(1, 1) = d;
+  // S = P = diag(1, -1): [[a, b], [c, d]] -> [[a, -b], [-c, d]].
+  const Mat<2> got = floor_ghost_gradient(WallKind::free_slip, G);
+  EXPECT_EQ(got(0, 0), a);
+  EXPECT_EQ(got(0, 1), -b);
+  EXPECT_EQ(got(1, 0), -c);
+  EXPECT_EQ(got(1, 1), d);
+}
+
+TEST(BoxWalls, NoSlipFloorGradientIsPGS) {
+  // S = diag(1, -1), P = -I: (P G S)_{kl} = -G_kl S_l, i.e. [[a, b], [c, d]] -> [[-a, b], [-c, d]]:
+  // du/dy (the wall shear) is kept, the normal derivative of the normal velocity d is kept, the
+  // tangential derivatives a and c flip. (The ghost field is v'(x, y) = -v(x, -y).)
+  const double a = 1.5, b = -2.25, c = 0.75, d = 3.0;
+  Mat<2> G;
+  G(0, 0) = a;
+  G(0, 1) = b;
+  G(1, 0) = c;
+  G(1, 1) = d;
+  const Mat<2> got = floor_ghost_gradient(WallKind::no_slip, G);
+  EXPECT_EQ(got(0, 0), -a);
+  EXPECT_EQ(got(0, 1), b);
+  EXPECT_EQ(got(1, 0), -c);
+  EXPECT_EQ(got(1, 1), d);
+}
+
+// Independent of the P G S formula: for an affine velocity field v(x) = v0 + G x around the
+// source, the ghost carries the field v'(x') = P v(S (x' - t)); its gradient, measured by central
+// differences of that field (exact for an affine field up to round-off), must equal what the halo
+// writes. Checked for every ghost of a 3D corner particle with mixed wall kinds.
+TEST(BoxWalls, GhostGradientIsTheGradientOfTheMirroredField3D) {
+  auto box = unit_box<3>(WallKind::free_slip);
+  box.kind[0][0] = WallKind::no_slip;
+  box.kind[2][0] = WallKind::no_slip;
+  ParticleSet<3> ps;
+  add_particle<3>(ps, {{0.05, 0.04, 0.03}}, {{0.3, 0.7, -0.2}}, {{0.3, 0.7, -0.2}});
+  Halo<3> halo;
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 7u);
+  halo.append_ghosts(ps);
+  Mat<3> G;
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l)
+      G(k, l) = 0.5 + 1.25 * k - 0.75 * l + (k == l ? 2.0 : 0.0);
+  ps.grad_v[0] = G;
+  halo.update_velocity_gradient(ps);
+
+  const Vec<3> v0{{0.3, 0.7, -0.2}};
+  auto field = [&](const Vec<3>& y) { return v0 + G * y; };
+  for (std::size_t g = 0; g < halo.size(); ++g) {
+    const auto& mp = halo.maps()[g];
+    auto ghost_field = [&](const Vec<3>& xp) {
+      Vec<3> pre;
+      for (int k = 0; k < 3; ++k)
+        pre[k] = mp.scale[k] * (xp[k] - mp.shift[k]);
+      Vec<3> out = field(pre);
+      for (int k = 0; k < 3; ++k)
+        out[k] *= mp.vscale[k];
+      return out;
+    };
+    const Vec<3> xg = ps.x[ps.n_real + g];
+    const double eps = 0.125;  // affine field: the central difference is exact up to round-off
+    for (int l = 0; l < 3; ++l) {
+      Vec<3> e;
+      e[l] = eps;
+      const Vec<3> dv = (ghost_field(xg + e) - ghost_field(xg - e)) * (0.5 / eps);
+      for (int k = 0; k < 3; ++k)
+        // |G| <= 5, field values O(1): a few ulp of O(1) numbers divided by 2 eps = 0.25.
+        EXPECT_NEAR(ps.grad_v[ps.n_real + g](k, l), dv[k], 1e-13)
+            << "ghost " << g << " component (" << k << ", " << l << ")";
+    }
+  }
+}
+
+TEST(BoxWalls, ReflectCrossingsPutsParticleBackAsItsMirrorImage) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, -0.01}}, {{0.3, -0.7}}, {{0.2, -0.6}});  // just below the floor
+  add_particle<2>(ps, {{0.4, -0.5}}, {{0.3, -0.7}}, {{0.2, -0.6}});   // beyond range: lost
+  add_particle<2>(ps, {{0.6, 0.5}}, {{0.3, -0.7}}, {{0.2, -0.6}});    // inside
+  add_particle<2>(ps, {{0.7, 0.0}}, {{0.3, -0.7}}, {{0.2, -0.6}});    // exactly on the wall
+  const auto box = unit_box<2>(WallKind::free_slip);
+  box.reflect_crossings(ps, kRange);
+  EXPECT_EQ(ps.x[0], (Vec<2>{{0.5, 0.01}}));  // 2 * 0 - (-0.01): exact
+  EXPECT_EQ(ps.v[0], (Vec<2>{{0.3, 0.7}}));
+  EXPECT_EQ(ps.v_half[0], (Vec<2>{{0.2, 0.6}}));
+  EXPECT_EQ(ps.x[1], (Vec<2>{{0.4, -0.5}}));
+  EXPECT_EQ(ps.v[1], (Vec<2>{{0.3, -0.7}}));
+  EXPECT_EQ(ps.x[2], (Vec<2>{{0.6, 0.5}}));
+  EXPECT_EQ(ps.x[3], (Vec<2>{{0.7, 0.0}}));
+  EXPECT_EQ(ps.v[3], (Vec<2>{{0.3, -0.7}}));
+  EXPECT_EQ(box.first_outside(ps), 1);
+}
+
+TEST(BoxWalls, ReflectCrossingsNoSlipUpperAndCorner) {
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.kind[0][1] = WallKind::no_slip;  // right wall
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{1.02, 0.5}}, {{0.3, -0.7}}, {{0.2, -0.6}});  // through the no-slip wall
+  add_particle<2>(ps, {{-0.01, -0.02}}, {{-0.3, -0.7}}, {{-0.2, -0.6}});  // through a corner
+  box.reflect_crossings(ps, kRange);
+  EXPECT_DOUBLE_EQ(ps.x[0][0], 0.98);  // 2 * 1 - 1.02 rounds once: 4 ulp
+  EXPECT_EQ(ps.x[0][1], 0.5);
+  EXPECT_EQ(ps.v[0], (Vec<2>{{-0.3, 0.7}}));
+  EXPECT_EQ(ps.v_half[0], (Vec<2>{{-0.2, 0.6}}));
+  EXPECT_EQ(ps.x[1], (Vec<2>{{0.01, 0.02}}));
+  EXPECT_EQ(ps.v[1], (Vec<2>{{0.3, 0.7}}));
+  EXPECT_EQ(ps.v_half[1], (Vec<2>{{0.2, 0.6}}));
+  EXPECT_EQ(box.first_outside(ps), -1);
+}
+
+TEST(BoxWalls, OpenSideIsNotReflectedAndParticleIsReportedLost) {
+  auto box = unit_box<2>(WallKind::free_slip);
+  box.kind[1][0] = WallKind::open;
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.5, 0.5}}, {{0.3, -0.7}}, {{0.2, -0.6}});
+  add_particle<2>(ps, {{0.5, -0.01}}, {{0.3, -0.7}}, {{0.2, -0.6}});
+  box.reflect_crossings(ps, kRange);
+  EXPECT_EQ(ps.x[1], (Vec<2>{{0.5, -0.01}}));
+  EXPECT_EQ(box.first_outside(ps), 1);
+}
+
+TEST(BoxWalls, FirstOutside) {
+  const auto box = unit_box<2>(WallKind::free_slip);
+  ParticleSet<2> ps;
+  EXPECT_EQ(box.first_outside(ps), -1);                           // empty
+  add_particle<2>(ps, {{0.0, 0.0}}, {{0.0, 0.0}}, {{0.0, 0.0}});  // on the corner: inside
+  add_particle<2>(ps, {{1.0, 0.3}}, {{0.0, 0.0}}, {{0.0, 0.0}});
+  add_particle<2>(ps, {{0.5, 0.5}}, {{0.0, 0.0}}, {{0.0, 0.0}});
+  EXPECT_EQ(box.first_outside(ps), -1);
+  add_particle<2>(ps, {{0.5, 1.5}}, {{0.0, 0.0}}, {{0.0, 0.0}});
+  add_particle<2>(ps, {{-0.5, 0.5}}, {{0.0, 0.0}}, {{0.0, 0.0}});
+  EXPECT_EQ(box.first_outside(ps), 3);
+  ps.x[2][0] = std::numeric_limits<double>::quiet_NaN();  // NaN counts as outside
+  EXPECT_EQ(box.first_outside(ps), 2);
+  // Ghosts beyond n_real are ignored.
+  ParticleSet<2> g;
+  add_particle<2>(g, {{0.05, 0.5}}, {{0.0, 0.0}}, {{0.0, 0.0}});
+  Halo<2> halo;
+  box.build_halo(g, kRange, halo);
+  halo.append_ghosts(g);
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(box.first_outside(g), -1);
+}
+
+}  // namespace
+}  // namespace flume

@@ -1,0 +1,132 @@
+// Unit tests of the Tait equation of state (src/flume/equations/eos_tait.hpp):
+//   p = kappa [ (rho / rho0)^gamma - 1 ],  compression positive,
+// its sound speed, its stored elastic energy and its hydrostatic profile.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "flume/equations/eos_tait.hpp"
+
+namespace flume {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A water-like fluid: c0 = 20 m/s (10 sqrt(g H) for a 0.4 m column), kappa = rho0 c0^2 / gamma.
+TaitEos water(double gamma = 7.0) {
+  TaitEos e;
+  e.rho0 = 1000.0;
+  e.gamma = gamma;
+  e.kappa = e.rho0 * 20.0 * 20.0 / gamma;
+  return e;
+}
+
+TEST(TaitEos, ZeroPressureAtReferenceDensity) {
+  for (const double gamma : {1.0, 1.4, 7.0}) {
+    const TaitEos e = water(gamma);
+    // (rho0 / rho0)^gamma = pow(1, gamma) = 1 exactly, so exactly 0.
+    EXPECT_EQ(e.pressure(e.rho0), 0.0) << "gamma " << gamma;
+  }
+}
+
+TEST(TaitEos, CompressionPositiveTensionNegative) {
+  const TaitEos e = water();
+  EXPECT_GT(e.pressure(1001.0), 0.0);
+  EXPECT_GT(e.pressure(1100.0), e.pressure(1001.0));  // monotone
+  EXPECT_LT(e.pressure(999.0), 0.0);
+  // The linearised value kappa gamma (rho / rho0 - 1) = c0^2 (rho - rho0): for a 0.1 %
+  // compression the relative second-order term is (gamma - 1) / 2 * 1e-3 = 3e-3 (the third-order
+  // one 5e-6).
+  const double lin = 20.0 * 20.0 * 1.0;
+  EXPECT_NEAR(e.pressure(1001.0), lin, 3.5e-3 * lin);
+  // Exact value from the formula: kappa (1.001^7 - 1).
+  EXPECT_NEAR(e.pressure(1001.0), e.kappa * (std::pow(1.001, 7.0) - 1.0),
+              8.0 * kEps * e.kappa);  // a few ulp of kappa * 1.007 (cancellation in "- 1")
+}
+
+TEST(TaitEos, ReferenceSoundSpeed) {
+  const TaitEos e = water();
+  // sqrt(gamma kappa / rho0) = c0 = 20: a few ulp (pow(1, 6) = 1 exactly, one sqrt and the
+  // round trip through kappa).
+  EXPECT_NEAR(e.sound_speed(e.rho0), std::sqrt(e.gamma * e.kappa / e.rho0), 4.0 * kEps * 20.0);
+  EXPECT_NEAR(e.sound_speed(e.rho0), 20.0, 8.0 * kEps * 20.0);
+  EXPECT_EQ(e.reference_sound_speed(), std::sqrt(e.gamma * e.kappa / e.rho0));
+}
+
+// Central difference of f at x with step dx: error dx^2 / 6 |f'''| (truncation) plus
+// ~ eps |f| / dx (round-off).
+template <class F>
+double central_difference(F f, double x, double dx) {
+  return (f(x + dx) - f(x - dx)) / (2.0 * dx);
+}
+
+TEST(TaitEos, PressureDerivativeIsSoundSpeedSquared) {
+  const TaitEos e = water();
+  for (const double rho : {980.0, 1000.0, 1003.0, 1030.0}) {
+    const double dx = 1e-3;  // kg/m^3
+    const double fd = central_difference([&](double r) { return e.pressure(r); }, rho, dx);
+    const double c = e.sound_speed(rho);
+    // Truncation: p''' = kappa gamma (gamma-1)(gamma-2) rho^(gamma-3) / rho0^gamma ~ 210 kappa /
+    // rho0^3 ~ 1.2e-2 near rho0 (3e-2 at 1030), times dx^2 / 6: ~5e-9. Round-off: p(rho +- dx)
+    // carry ~ (gamma + 1) ulp of kappa (rho / rho0)^gamma ~ 8 * 2.2e-16 * 7.4e4 ~ 1.3e-10 each,
+    // over 2 dx: ~1.3e-7. Against c^2 ~ 400 both are < 1e-9 relative; 1e-8 leaves a margin.
+    EXPECT_NEAR(fd, c * c, 1e-8 * c * c) << "rho " << rho;
+  }
+}
+
+TEST(TaitEos, InternalEnergyVanishesAtReferenceDensity) {
+  for (const double gamma : {1.4, 7.0}) {
+    const TaitEos e = water(gamma);
+    // Both brackets are x - x with identical operands: exactly 0.
+    EXPECT_EQ(e.specific_internal_energy(e.rho0), 0.0) << "gamma " << gamma;
+  }
+}
+
+TEST(TaitEos, InternalEnergyDerivativeIsPOverRhoSquared) {
+  for (const double gamma : {1.4, 7.0}) {
+    const TaitEos e = water(gamma);
+    for (const double rho : {970.0, 995.0, 1005.0, 1040.0}) {
+      const double dx = 1e-2;
+      const double fd =
+          central_difference([&](double r) { return e.specific_internal_energy(r); }, rho, dx);
+      const double want = e.pressure(rho) / (rho * rho);
+      // Truncation dx^2 / 6 |e'''| with e' = p / rho^2, |e'''| ~ |p''| / rho^2 ~ c^2 gamma / rho^3
+      // ~ 3e-6: ~5e-11. Round-off: e is a difference of terms up to kappa / (rho0 (gamma - 1))
+      // ~ 700 (gamma = 1.4) that cancel, so f(x +- dx) carry a few ulp of 700 ~ 5e-13 each, over
+      // 2 dx: ~5e-11. At rho = 995 the target is ~ -2e-3, so an absolute 1e-9 is still a
+      // relative 5e-7 at worst.
+      EXPECT_NEAR(fd, want, 1e-9) << "gamma " << gamma << " rho " << rho;
+    }
+  }
+}
+
+TEST(TaitEos, InternalEnergyIsPositiveAwayFromReference) {
+  // e(rho) = int p / rho^2: p changes sign with rho - rho0, so e has a minimum 0 at rho0.
+  const TaitEos e = water();
+  EXPECT_GT(e.specific_internal_energy(1010.0), 0.0);
+  EXPECT_GT(e.specific_internal_energy(990.0), 0.0);
+}
+
+TEST(TaitEos, HydrostaticDensityIsTheExactDiscreteEquilibrium) {
+  const TaitEos e = water();
+  const double g = 9.81;
+  for (const double depth : {0.0, 1e-4, 0.01, 0.2, 0.4, 3.0}) {
+    const double gd = g * depth;
+    const double rho = e.hydrostatic_density(gd);
+    const double p = e.pressure(rho);
+    const double want = e.rho0 * gd;
+    // p = kappa ((rho / rho0)^gamma - 1) with (rho / rho0)^gamma = 1 + rho0 g d / kappa up to
+    // round-off: the 1/gamma power, the multiply by rho0, the divide by rho0 each carry <= 1 ulp
+    // and are amplified by gamma in the gamma power, plus the power's own ulp: about
+    // (3 gamma + 2) ulp of X = 1 + rho0 g d / kappa, times kappa after the "- 1".
+    const double x = 1.0 + e.rho0 * gd / e.kappa;
+    const double tol = (3.0 * e.gamma + 2.0) * kEps * x * e.kappa;
+    EXPECT_NEAR(p, want, tol) << "depth " << depth;
+  }
+  EXPECT_EQ(e.hydrostatic_density(0.0), e.rho0);  // pow(1, 1/gamma) = 1 exactly
+}
+
+}  // namespace
+}  // namespace flume
