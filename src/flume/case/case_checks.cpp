@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
@@ -93,7 +92,11 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.dimension = dim;
 
   s.name = r.str("case.name");
-  if (!std::regex_match(s.name, std::regex("[A-Za-z0-9_-]+")))
+  const auto name_char = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  };
+  if (s.name.empty() || !std::all_of(s.name.begin(), s.name.end(), name_char))
     r.fail("case.name",
            fmt::format("= \"{}\": required; letters, digits, '_' and '-' only", s.name));
   s.description = r.str("case.description");
