@@ -60,13 +60,14 @@ hydrostatic = false
   BoxWalls<2> walls;
   walls.lo = Vec<2>{{-1.0, -1.0}};
   walls.hi = Vec<2>{{2.0, 2.0}};
-  for (auto& axis : walls.kind) axis = {WallKind::open, WallKind::open};
+  for (auto& axis : walls.kind)
+    axis = {WallKind::open, WallKind::open};
   SimulationConfig<2> config;
   config.cfl = 0.3;
-  return Simulation<2>(ps, walls,
-                       make_scheme<2>(SchemeRows{spec.density, spec.force},
-                                      *kernel_from_name(spec.kernel), phys),
-                       phys, config);
+  return Simulation<2>(
+      ps, walls,
+      make_scheme<2>(SchemeRows{spec.density, spec.force}, *kernel_from_name(spec.kernel), phys),
+      phys, config);
 }
 
 struct Totals {
@@ -92,7 +93,8 @@ class MomentumConservation : public ::testing::TestWithParam<std::string> {};
 TEST_P(MomentumConservation, LinearMomentumKeptToRoundOffWithViscosity) {
   auto sim = cloud(GetParam(), 0.5);
   const Totals before = totals(sim.particles());
-  for (int s = 0; s < 100; ++s) sim.step(1.0);
+  for (int s = 0; s < 100; ++s)
+    sim.step(1.0);
   const Totals after = totals(sim.particles());
   // The pair forces cancel exactly in exact arithmetic; each step adds O(1e-16) relative
   // round-off per particle sum, so 100 steps stay far below 1e-12 of sum m |v| (cases.md BL-1).
@@ -106,7 +108,8 @@ TEST_P(MomentumConservation, LinearMomentumKeptToRoundOffWithViscosity) {
 TEST_P(MomentumConservation, AngularMomentumKeptByInviscidCentralForces) {
   auto sim = cloud(GetParam(), 0.0);
   const Totals before = totals(sim.particles());
-  for (int s = 0; s < 100; ++s) sim.step(1.0);
+  for (int s = 0; s < 100; ++s)
+    sim.step(1.0);
   const Totals after = totals(sim.particles());
   // Central pair forces and the staggered leap-frog measure (BL 3.3.1, leapfrog.hpp): exact up
   // to round-off; 1e-9 of sum m |x| |v| is the tolerance of cases.md BL-1.
@@ -121,7 +124,8 @@ INSTANTIATE_TEST_SUITE_P(Presets, MomentumConservation,
 TEST(MomentumConservation, ViscousStandardSphLosesAngularMomentum) {
   auto sim = cloud("standard", 0.5);
   const Totals before = totals(sim.particles());
-  for (int s = 0; s < 100; ++s) sim.step(1.0);
+  for (int s = 0; s < 100; ++s)
+    sim.step(1.0);
   const Totals after = totals(sim.particles());
   EXPECT_GT(std::abs(after.angular - before.angular), 1e-6 * before.sum_mxv);
 }

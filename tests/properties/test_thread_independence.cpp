@@ -13,7 +13,8 @@ ParticleSet<2> run_with_threads(const std::string& preset, int threads) {
   omp_set_num_threads(threads);
   const auto spec = test::spec_from(test::dam_break_toml(preset, 20, 0.03));
   auto sim = build_simulation<2>(spec);
-  while (sim.time() < spec.end_time) sim.step(spec.end_time - sim.time());
+  while (sim.time() < spec.end_time)
+    sim.step(spec.end_time - sim.time());
   return sim.particles();
 }
 
@@ -37,8 +38,7 @@ TEST_P(ThreadIndependence, OneTwoAndThreeThreadsGiveIdenticalParticles) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Presets, ThreadIndependence,
-                         ::testing::Values("standard", "continuity"));
+INSTANTIATE_TEST_SUITE_P(Presets, ThreadIndependence, ::testing::Values("standard", "continuity"));
 
 }  // namespace
 }  // namespace flume

@@ -67,7 +67,8 @@ TEST(ViscousOperator, RigidMotionsFeelNoViscousForce) {
   // A uniform field has grad v = 0 exactly (BL (22) sums v_b - v_a = 0), and with rho = rho0 the
   // pressure is exactly 0: no force at all, to the last bit.
   const auto uniform = [](const Vec<2>&) { return Vec<2>{{0.3, -0.2}}; };
-  const auto a = viscous_acceleration_at_centre("continuity", KernelKind::cubic_spline, 1.0, uniform);
+  const auto a =
+      viscous_acceleration_at_centre("continuity", KernelKind::cubic_spline, 1.0, uniform);
   EXPECT_EQ(a[0], 0.0);
   EXPECT_EQ(a[1], 0.0);
 }

@@ -23,7 +23,8 @@ std::string error_of(const std::string& toml, const std::vector<std::string>& se
 void expect_one_line_with(const std::string& msg, std::initializer_list<std::string> parts) {
   EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   EXPECT_EQ(msg.rfind("test.toml", 0), 0u) << "must start with the file name: " << msg;
-  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+  for (const auto& p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
 }
 
 TEST(CaseReader, ValidFileResolvesEveryDefault) {

@@ -32,7 +32,8 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("flume_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("flume_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -66,13 +67,14 @@ TEST_F(Cli, RunWritesTheRunDirectory) {
                         "snapshots/snapshots.pvd", "snapshots/snapshot_00000.vtu"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto diag = io::read_csv(out / "diagnostics.csv");
-  for (const char* c : {"time", "step", "dt", "particles", "mass", "momentum_x", "momentum_y",
-                        "angular_momentum", "kinetic_energy", "potential_energy",
-                        "internal_energy", "rho_min", "rho_max"})
+  for (const char* c :
+       {"time", "step", "dt", "particles", "mass", "momentum_x", "momentum_y", "angular_momentum",
+        "kinetic_energy", "potential_energy", "internal_energy", "rho_min", "rho_max"})
     EXPECT_NO_THROW(diag.column(c)) << c;
   const auto mass = diag.column("mass");
   // Particles keep their masses: total mass constant to round-off of the serial sum.
-  for (double m : mass) EXPECT_NEAR(m, mass.front(), 1e-14 * mass.front());
+  for (double m : mass)
+    EXPECT_NEAR(m, mass.front(), 1e-14 * mass.front());
   const auto probes = io::read_csv(out / "probes.csv");
   EXPECT_EQ(probes.columns, (std::vector<std::string>{"time", "surge_front", "column_height"}));
   const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));

@@ -394,10 +394,11 @@ TEST(CellList, CellCountGrowsLinearlyForUniformClouds) {
 
 // Regression: binning with cells exactly `cutoff` wide computed s = (x - origin) / cutoff in
 // floating point, and the rounding could put two points closer than `cutoff` into cells two
-// apart, so the 3^D stencil missed the pair (cells are now a hair wider than the cut-off). Here (x_i - o) / c = 4.999999999999999 (cell 4) and
-// (x_j - o) / c rounds up to exactly 6.0 (cell 6), while x_j - x_i < c and (x_j - x_i)^2 < c^2
-// also in floating point, so brute force lists the pair and the cell list does not. Found by a
-// random search over points placed within a few ulps of the cell faces.
+// apart, so the 3^D stencil missed the pair (cells are now a hair wider than the cut-off). Here
+// (x_i - o) / c = 4.999999999999999 (cell 4) and (x_j - o) / c rounds up to exactly 6.0 (cell 6),
+// while x_j - x_i < c and (x_j - x_i)^2 < c^2 also in floating point, so brute force lists the pair
+// and the cell list does not. Found by a random search over points placed within a few ulps of the
+// cell faces.
 TEST(CellList, RoundingInBinningMustNotLoseAPair) {
   const double c = 0.48814312045512825;
   const std::vector<Vec<2>> x{Vec<2>{{-3.0153157186106849, 0.0}},

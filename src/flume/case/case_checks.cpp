@@ -235,7 +235,8 @@ toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
   if (auto* curves = t.at_path("validation.curves").as_array()) {
     for (std::size_t c = 0; c < curves->size() && c < spec.curves.size(); ++c)
       curves->get(c)->as_table()->insert_or_assign(
-          "reference", std::filesystem::absolute(spec.curves[c].reference).lexically_normal().string());
+          "reference",
+          std::filesystem::absolute(spec.curves[c].reference).lexically_normal().string());
   }
   return t;
 }

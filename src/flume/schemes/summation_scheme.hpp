@@ -26,7 +26,7 @@ class SummationScheme final : public Scheme<D> {
   bool evolves_density() const override { return false; }
 
   void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
-                     const Halo<D>& halo) const override {
+                             const Halo<D>& halo) const override {
     DensitySummation<D> density{ps};
     sweep<D, Kernel>(nl, ps, density);
     halo.update_scalar(ps, ps.rho);
