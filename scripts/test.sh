@@ -8,12 +8,12 @@ bash scripts/install_deps.sh
 
 echo "== build (Release) and tests"
 bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j 2
+ctest --test-dir build --output-on-failure
 
 echo "== build with AddressSanitizer + UndefinedBehaviorSanitizer, and tests"
 bash scripts/build.sh --sanitize
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir build-sanitize --output-on-failure -j 2
+  ctest --test-dir build-sanitize --output-on-failure
 
 echo "== formatting (clang-format)"
 files=$(git ls-files '*.cpp' '*.hpp' 2>/dev/null || find src tests bench -name '*.[ch]pp')
