@@ -72,7 +72,7 @@ TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
   EXPECT_LT(vmax, 0.05 * std::sqrt(2 * g * kH)) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Presets, HydrostaticTank, ::testing::Values("continuity"));
+INSTANTIATE_TEST_SUITE_P(Presets, HydrostaticTank, ::testing::Values("continuity", "csph"));
 
 }  // namespace
 }  // namespace flume

@@ -57,7 +57,7 @@ TEST_P(PairRepulsion, ApproachingParticlesRepel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, PairRepulsion,
-                         ::testing::Values("standard", "continuity", "inconsistent"));
+                         ::testing::Values("standard", "continuity", "inconsistent", "csph"));
 
 }  // namespace
 }  // namespace flume

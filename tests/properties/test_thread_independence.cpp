@@ -38,7 +38,8 @@ TEST_P(ThreadIndependence, OneTwoAndThreeThreadsGiveIdenticalParticles) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Presets, ThreadIndependence, ::testing::Values("standard", "continuity"));
+INSTANTIATE_TEST_SUITE_P(Presets, ThreadIndependence,
+                         ::testing::Values("standard", "continuity", "csph"));
 
 }  // namespace
 }  // namespace flume

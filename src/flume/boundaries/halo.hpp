@@ -53,6 +53,20 @@ class Halo {
       f[ps.n_real + g] = mul(maps_[g].vscale, f[maps_[g].source]);
   }
 
+  // The CSPH corrections of a ghost: its neighbourhood is the mirror (or shifted) image of its
+  // source's, so gamma maps like a position difference (S gamma) and L like S L S.
+  void update_corrections(ParticleSet<D>& ps) const {
+    for (std::size_t g = 0; g < maps_.size(); ++g) {
+      const auto& mp = maps_[g];
+      const std::size_t i = ps.n_real + g;
+      ps.shepard[i] = ps.shepard[mp.source];
+      ps.gamma[i] = mul(mp.scale, ps.gamma[mp.source]);
+      for (int k = 0; k < D; ++k)
+        for (int l = 0; l < D; ++l)
+          ps.L[i](k, l) = mp.scale[k] * ps.L[mp.source](k, l) * mp.scale[l];
+    }
+  }
+
   // Copies a scalar field (density, pressure, ...) from the sources to their ghosts.
   void update_scalar(const ParticleSet<D>& ps, std::vector<double>& f) const {
     for (std::size_t g = 0; g < maps_.size(); ++g)

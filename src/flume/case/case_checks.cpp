@@ -111,7 +111,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.density = r.str("scheme.density").empty()
                   ? rows.density
                   : r.one_of("scheme.density", {"summation", "continuity"});
-  s.force = r.str("scheme.force").empty() ? rows.force : r.one_of("scheme.force", {"bl7", "bl20"});
+  s.force = r.str("scheme.force").empty() ? rows.force
+                                          : r.one_of("scheme.force", {"bl7", "bl20", "bl59"});
   const auto& combos = scheme_combinations();
   if (std::find(combos.begin(), combos.end(), s.density + "+" + s.force) == combos.end())
     r.fail("scheme.force", fmt::format("= \"{}\" has no scheme with density \"{}\"; available "

@@ -24,11 +24,11 @@ dt = 0.0               # fixed time step, s; 0 = the CFL rule of BL (63)
 spacing = 0.001        # initial particle spacing dx, m (particles on a square lattice)
 
 [scheme]
-preset = "continuity"  # standard | continuity | inconsistent (spec/methods.md)
+preset = "continuity"  # standard | continuity | inconsistent | csph (spec/methods.md)
 kernel = "cubic_spline"  # cubic_spline | quintic_spline | gaussian | wendland_c2
 h_over_dx = 1.3        # smoothing length h = h_over_dx * spacing
 density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4))
-force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20))
+force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20)) | bl59 (CSPH)
 integrator = "leapfrog"  # BL (61)-(62)
 cfl = 0.3              # Courant number C_FL of BL (63)
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off

@@ -30,6 +30,11 @@ struct ParticleSet {
   std::vector<V> a;          // acceleration, m/s^2
   std::vector<double> drho;  // density rate, kg/(m^3 s)
 
+  // --- kernel and gradient corrections (CSPH, BL 4.3) ---
+  std::vector<double> shepard;  // sum_b V_b W_b(x_a), the denominator of BL (53)-(54), -
+  std::vector<V> gamma;         // gamma(x_a) of BL (57), 1/m
+  std::vector<M> L;             // correction matrix L_a of BL (58), -
+
   // --- integrator state carried between steps (leap-frog staggered values) ---
   std::vector<V> v_half;  // staggered velocity v^{n+1/2} (after a step) / v^0 (at start), m/s
 
@@ -51,6 +56,9 @@ struct ParticleSet {
     f(grad_v);
     f(a);
     f(drho);
+    f(shepard);
+    f(gamma);
+    f(L);
     f(v_half);
   }
 

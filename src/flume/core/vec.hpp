@@ -155,3 +155,42 @@ inline double cross_z(const Vec<2>& a, const Vec<2>& b) {
 }
 
 }  // namespace flume
+
+namespace flume {
+
+template <int D>
+constexpr double determinant(const Mat<D>& m) {
+  if constexpr (D == 1) {
+    return m(0, 0);
+  } else if constexpr (D == 2) {
+    return m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+  } else {
+    return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
+           m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+           m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+  }
+}
+
+// Inverse by the adjugate; the caller checks the determinant first.
+template <int D>
+constexpr Mat<D> inverse(const Mat<D>& m) {
+  Mat<D> r;
+  const double inv_det = 1.0 / determinant(m);
+  if constexpr (D == 1) {
+    r(0, 0) = inv_det;
+  } else if constexpr (D == 2) {
+    r(0, 0) = m(1, 1) * inv_det;
+    r(0, 1) = -m(0, 1) * inv_det;
+    r(1, 0) = -m(1, 0) * inv_det;
+    r(1, 1) = m(0, 0) * inv_det;
+  } else {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+        r(i, j) = (m(i1, j1) * m(i2, j2) - m(i1, j2) * m(i2, j1)) * inv_det;
+      }
+  }
+  return r;
+}
+
+}  // namespace flume

@@ -8,6 +8,7 @@
 #include "flume/equations/force_bonet_lok_20.hpp"
 #include "flume/equations/force_bonet_lok_7.hpp"
 #include "flume/schemes/continuity_scheme.hpp"
+#include "flume/schemes/csph_scheme.hpp"
 #include "flume/schemes/summation_scheme.hpp"
 
 namespace flume {
@@ -18,6 +19,7 @@ const std::map<std::string, SchemeRows>& presets() {
       {"standard", {"summation", "bl7"}},
       {"continuity", {"continuity", "bl20"}},
       {"inconsistent", {"summation", "bl20"}},
+      {"csph", {"continuity", "bl59"}},
   };
   return table;
 }
@@ -40,8 +42,8 @@ const std::vector<std::string>& preset_names() {
 }
 
 const std::vector<std::string>& scheme_combinations() {
-  static const std::vector<std::string> combos{"summation+bl7", "summation+bl20",
-                                               "continuity+bl20"};
+  static const std::vector<std::string> combos{"summation+bl7", "summation+bl20", "continuity+bl20",
+                                               "continuity+bl59"};
   return combos;
 }
 
@@ -56,6 +58,8 @@ std::unique_ptr<Scheme<D>> make_scheme(const SchemeRows& rows, KernelKind kernel
       return std::make_unique<SummationScheme<D, K, ForceBonetLok20>>(phys);
     if (rows.density == "continuity" && rows.force == "bl20")
       return std::make_unique<ContinuityScheme<D, K>>(phys);
+    if (rows.density == "continuity" && rows.force == "bl59")
+      return std::make_unique<CsphScheme<D, K>>(phys);
     throw InputError(fmt::format("no scheme combines density '{}' with force '{}'; available: {}",
                                  rows.density, rows.force, fmt::join(scheme_combinations(), ", ")));
   });

@@ -14,7 +14,7 @@ namespace flume {
 
 struct SchemeRows {
   std::string density;  // "summation" (BL (1)) or "continuity" (BL (4))
-  std::string force;    // "bl7" (BL (7)) or "bl20" (BL (20) = BL (8) with +)
+  std::string force;    // "bl7" (BL (7)), "bl20" (BL (20) = BL (8) with +), "bl59" (CSPH)
 };
 
 // The rows of a named preset, or nullopt for an unknown name.

@@ -1,0 +1,34 @@
+// CSPH internal force, BL (59), variationally consistent with the velocity gradient BL (55):
+//   T_a = sum_b V_a V_b sigma_b L_b grad W~_a(x_b)     (BL, tension positive),
+//   grad W~_a(x_b) = [grad W_a(x_b) - W_a(x_b) gamma_b] / S_b     (BL (57), erratum 2).
+// flume is compression positive with sigma = -p I + sigma' (erratum 1), so
+//   a_a = (1/m_a) sum_b V_a V_b (p_b I - sigma'_b) L_b grad W~_a(x_b).
+// In the pair loop of a = i, b = j: grad W_a(x_b) = -grad_i W_ij and W_a(x_b) = W_ij. The self
+// term (b = a) is not zero here (W(0) gamma_a) and is part of the sum. Linear momentum is kept
+// because sum_a V_a grad W~_a(x_b) = 0; angular momentum because L_b satisfies BL (41).
+#pragma once
+
+#include "flume/core/particle_set.hpp"
+#include "flume/equations/pair.hpp"
+#include "flume/equations/viscosity_bonet_lok_24.hpp"
+
+namespace flume {
+
+template <int D>
+struct ForceCsphBL59 {
+  using Acc = Vec<D>;
+  ParticleSet<D>& ps;
+  double mu;  // dynamic viscosity, Pa s (sigma' = 2 mu d', BL (23)-(24))
+
+  Acc init(std::size_t) const { return {}; }
+  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
+    const std::size_t j = g.j;
+    Mat<D> stress = Mat<D>::identity() * ps.p[j];
+    if (mu > 0.0) stress -= deviatoric_stress(ps.grad_v[j], mu);
+    const Vec<D> gw = (-g.gradw - ps.gamma[j] * g.w) * (1.0 / ps.shepard[j]);
+    a += (stress * (ps.L[j] * gw)) * (ps.m[j] / (ps.rho[j] * ps.rho[i]));
+  }
+  void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
+};
+
+}  // namespace flume

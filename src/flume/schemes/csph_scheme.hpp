@@ -1,0 +1,56 @@
+// Preset "csph": mixed kernel and gradient correction, BL section 4.3. The density follows the
+// continuity equation with the corrected divergence, and the force BL (59) is the variational
+// partner of the corrected velocity gradient BL (55). Algorithm, one step:
+//   1. sweep: S_a, gamma_a                                   BL (53), (57)
+//   2. sweep: L_a, grad v_a                                  BL (55), (58)
+//   3. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts   BL (60)
+//   4. sweep: a_a = g + internal force                       BL (59)
+//   -- leap-frog kick --
+//   5. sweep: d rho_a/dt = -rho_a tr(grad v_a) with v^{n+1/2}, L_a from step 2   BL (2), (55)
+// Artificial viscosity W (3.18) may be added (alpha, beta); BL's CSPH runs use none.
+#pragma once
+
+#include "flume/equations/csph_gradient_bl58.hpp"
+#include "flume/equations/force_csph_bl59.hpp"
+#include "flume/equations/shepard_gamma_bl57.hpp"
+#include "flume/equations/viscosity_artificial_monaghan.hpp"
+#include "flume/schemes/common_steps.hpp"
+#include "flume/schemes/scheme.hpp"
+
+namespace flume {
+
+template <int D, class Kernel>
+class CsphScheme final : public Scheme<D> {
+ public:
+  explicit CsphScheme(Physics<D> phys) : phys_(std::move(phys)) {}
+  double support() const override { return Kernel::support; }
+  bool evolves_density() const override { return true; }
+
+  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+                             const Halo<D>& halo) const override {
+    ShepardGammaBL57<D> shepard{ps};
+    sweep<D, Kernel>(nl, ps, shepard);
+    CsphGradientBL58<D> correction{ps};
+    sweep<D, Kernel>(nl, ps, correction);
+    halo.update_corrections(ps);
+    halo.update_velocity_gradient(ps);
+    update_pressure(ps, phys_, halo);
+
+    start_accelerations(ps, phys_);
+    ForceCsphBL59<D> internal{ps, phys_.mu};
+    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
+    sweep<D, Kernel>(nl, ps, internal, artificial);
+  }
+
+  void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
+                            const Halo<D>& halo) const override {
+    halo.update_velocity(ps, ps.v_half);
+    CsphContinuity<D> continuity{ps, ps.v_half};
+    sweep<D, Kernel>(nl, ps, continuity);
+  }
+
+ private:
+  Physics<D> phys_;
+};
+
+}  // namespace flume
