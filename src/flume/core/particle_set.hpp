@@ -27,6 +27,7 @@ struct ParticleSet {
   // --- derived in each step's sweeps ---
   std::vector<double> p;     // pressure (compression positive), Pa
   std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k / d x_l, 1/s
+  std::vector<M> stress;     // deviatoric (viscous) stress sigma' = 2 mu d', BL (23)-(24), Pa
   std::vector<V> a;          // acceleration, m/s^2
   std::vector<double> drho;  // density rate, kg/(m^3 s)
 
@@ -54,6 +55,7 @@ struct ParticleSet {
     f(h);
     f(p);
     f(grad_v);
+    f(stress);
     f(a);
     f(drho);
     f(shepard);

@@ -18,13 +18,13 @@ template <int D>
 struct ForceCsphBL59 {
   using Acc = Vec<D>;
   ParticleSet<D>& ps;
-  double mu;  // dynamic viscosity, Pa s (sigma' = 2 mu d', BL (23)-(24))
+  double mu;  // dynamic viscosity, Pa s; when > 0, ps.stress holds sigma' (BL (23)-(24))
 
   Acc init(std::size_t) const { return {}; }
   void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
     const std::size_t j = g.j;
     Mat<D> stress = Mat<D>::identity() * ps.p[j];
-    if (mu > 0.0) stress -= deviatoric_stress(ps.grad_v[j], mu);
+    if (mu > 0.0) stress -= ps.stress[j];
     const Vec<D> gw = (-g.gradw - ps.gamma[j] * g.w) * (1.0 / ps.shepard[j]);
     a += (stress * (ps.L[j] * gw)) * (ps.m[j] / (ps.rho[j] * ps.rho[i]));
   }

@@ -15,25 +15,30 @@ namespace flume {
 
 // sigma' = 2 mu d',  d = (G + G^T)/2,  d' = d - tr(d)/3 I  (BL (23)-(24)).
 template <int D>
-Mat<D> deviatoric_stress(const Mat<D>& grad_v, double mu) {
+inline Mat<D> deviatoric_stress(const Mat<D>& grad_v, double mu) {
   Mat<D> d = (grad_v + transpose(grad_v)) * 0.5;
   const double third_tr = trace(d) / 3.0;
-  for (int k = 0; k < D; ++k)
-    d(k, k) -= third_tr;
+  for (int k = 0; k < D; ++k) d(k, k) -= third_tr;
   return d * (2.0 * mu);
 }
 
+// ps.stress of every particle, ghosts included, from ps.grad_v (once per step, not per pair).
+template <int D>
+void update_deviatoric_stress(ParticleSet<D>& ps, double mu) {
+  const auto n = static_cast<long>(ps.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) ps.stress[i] = deviatoric_stress(ps.grad_v[i], mu);
+}
+
+// Reads ps.stress (update_deviatoric_stress).
 template <int D>
 struct ViscosityBonetLok24 {
   using Acc = Vec<D>;
   ParticleSet<D>& ps;
-  double mu;  // dynamic viscosity, Pa s
 
   Acc init(std::size_t) const { return {}; }
   void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    // Recomputing sigma'_i per pair is cheap in 2D/3D and keeps no extra per-particle array.
-    const Mat<D> s = deviatoric_stress(ps.grad_v[i], mu) + deviatoric_stress(ps.grad_v[g.j], mu);
-    a += (s * g.gradw) * (ps.m[g.j] / (ps.rho[i] * ps.rho[g.j]));
+    a += ((ps.stress[i] + ps.stress[g.j]) * g.gradw) * (ps.m[g.j] / (ps.rho[i] * ps.rho[g.j]));
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

@@ -32,13 +32,14 @@ class ContinuityScheme final : public Scheme<D> {
       VelocityGradientBL22<D> gradient{ps};
       sweep<D, Kernel>(nl, ps, gradient);
       halo.update_velocity_gradient(ps);
+      update_deviatoric_stress(ps, phys_.mu);
     }
 
     start_accelerations(ps, phys_);
     ForceBonetLok20<D> pressure{ps};
     ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
     if (phys_.mu > 0.0) {
-      ViscosityBonetLok24<D> viscous{ps, phys_.mu};
+      ViscosityBonetLok24<D> viscous{ps};
       sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
     } else {
       sweep<D, Kernel>(nl, ps, pressure, artificial);

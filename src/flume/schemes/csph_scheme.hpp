@@ -34,6 +34,7 @@ class CsphScheme final : public Scheme<D> {
     sweep<D, Kernel>(nl, ps, correction);
     halo.update_corrections(ps);
     halo.update_velocity_gradient(ps);
+    if (phys_.mu > 0.0) update_deviatoric_stress(ps, phys_.mu);
     update_pressure(ps, phys_, halo);
 
     start_accelerations(ps, phys_);
