@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Plot one flume probe curve against its reference data (used by `flume validate`)."""
+"""Plot flume probe curves (one per scheme) against reference data (used by `flume validate`)."""
 import argparse
 import csv
 
@@ -17,24 +17,32 @@ def read(path):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--flume", required=True)
+    ap.add_argument("--series", action="append", default=[], help="LABEL=CSV (columns x,y)")
     ap.add_argument("--reference", required=True)
+    ap.add_argument("--reference-label", default="reference")
     ap.add_argument("--out", required=True)
     ap.add_argument("--title", default="")
     ap.add_argument("--xlabel", default="x")
     ap.add_argument("--ylabel", default="y")
-    ap.add_argument("--reference-label", default="reference")
     a = ap.parse_args()
-    fx, fy = read(a.flume)
-    rx, ry = read(a.reference)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    ax.plot(fx, fy, "-", color="tab:blue", label="flume")
+    rx, ry = read(a.reference)
+    xmax = 1.15 * max(rx)  # the compared window; the run may go on beyond it
+    shown = list(ry)
+    for k, item in enumerate(a.series):
+        label, path = item.split("=", 1)
+        x, y = read(path)
+        ax.plot(x, y, "-", lw=2.0 if k == 0 else 1.2, label="flume " + label)
+        shown += [v for u, v in zip(x, y) if u <= xmax]
     ax.plot(rx, ry, "o", color="black", mfc="none", label=a.reference_label)
+    ax.set_xlim(0.0, xmax)
+    pad = 0.05 * (max(shown) - min(shown))
+    ax.set_ylim(min(shown) - pad, max(shown) + pad)
     ax.set_xlabel(a.xlabel)
     ax.set_ylabel(a.ylabel)
     ax.set_title(a.title, fontsize=9)
     ax.grid(alpha=0.3)
-    ax.legend()
+    ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(a.out, dpi=110)
 

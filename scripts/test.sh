@@ -6,6 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 
+# The test suites run one test at a time: each test already uses both cores through OpenMP.
 echo "== build (Release) and tests"
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure

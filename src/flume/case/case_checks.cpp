@@ -203,6 +203,10 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.quick = r.strings("validation.quick");
   s.time_scale = r.positive("validation.time_scale");
   s.notes = r.strings("validation.notes");
+  s.variants = r.strings("validation.variants");
+  for (const auto& v : s.variants)
+    if (v.find('=') == std::string::npos)
+      r.fail("validation.variants", fmt::format("\"{}\": each entry is KEY=VALUE", v));
   if (const auto* curves = t.at_path("validation.curves").as_array()) {
     for (std::size_t c = 0; c < curves->size(); ++c) {
       const std::string key = fmt::format("validation.curves[{}]", c);
@@ -216,6 +220,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       cc.reference_y = r.str(key + ".reference_y");
       cc.source = r.str(key + ".source");
       cc.value_scale = r.positive(key + ".value_scale");
+      cc.absolute = r.one_of(key + ".error", {"relative", "absolute"}) == "absolute";
       cc.tolerance = r.positive(key + ".tolerance");
       cc.quick_tolerance = r.positive(key + ".quick_tolerance");
       s.curves.push_back(cc);

@@ -72,13 +72,15 @@ wall_band = 2.0        # column height: particles within this many spacings of t
 quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (validate --quick)
 time_scale = 1.0       # s; the references' time is t / time_scale
 notes = []             # the papers' own numbers, quoted in the report
+variants = []          # "KEY=VALUE": other configurations run and reported beside the case
 
 # [[fluid_blocks]]: at least one; each a box of fluid on the particle lattice:
 #   min = {zero}, max = {one} (m), velocity = {zero} (m/s), hydrostatic = true
 # [[validation.curves]]: a probe compared with a reference curve:
 #   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
 #   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
-#   tolerance = 0.1, quick_tolerance = 0.1 (max relative error over the points)
+#   error = "relative" (or "absolute": in the reference's units), tolerance = 0.1,
+#   quick_tolerance = 0.1 (the largest error allowed over the compared points)
 )toml",
                      fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
                      fmt::arg("z_walls", z_walls));
@@ -103,7 +105,8 @@ const std::string& fluid_block_defaults(int dimension) {
 const std::string& curve_defaults() {
   static const std::string d =
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
-      "source = \"\"\nvalue_scale = 1.0\ntolerance = 0.1\nquick_tolerance = 0.1\n";
+      "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
+      "quick_tolerance = 0.1\n";
   return d;
 }
 

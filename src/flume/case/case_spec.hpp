@@ -24,7 +24,8 @@ struct CurveCheck {
   std::string reference_y;          // its column of the dimensionless probe value
   std::string source;               // where the reference comes from
   double value_scale = 1.0;         // probe value (m) divided by this gives the reference's y
-  double tolerance = 0.1;           // max relative error allowed over the compared points
+  bool absolute = false;            // error in the reference's units instead of relative
+  double tolerance = 0.1;           // max error allowed over the compared points
   double quick_tolerance = 0.1;
 };
 
@@ -77,9 +78,10 @@ struct CaseSpec {
   double wall_band = 2.0;    // spacings
 
   // [validation]
-  std::vector<std::string> quick;  // KEY=VALUE overrides of the reduced-resolution run
-  double time_scale = 1.0;         // s: reference time = t / time_scale
-  std::vector<std::string> notes;  // the papers' numbers, set beside flume's in the report
+  std::vector<std::string> quick;     // KEY=VALUE overrides of the reduced-resolution run
+  double time_scale = 1.0;            // s: reference time = t / time_scale
+  std::vector<std::string> notes;     // the papers' numbers, set beside flume's in the report
+  std::vector<std::string> variants;  // KEY=VALUE: other configurations run and reported beside
   std::vector<CurveCheck> curves;
 };
 

@@ -20,7 +20,7 @@ double interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
 std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::vector<double>& y,
                                       const std::vector<double>& ref_x,
                                       const std::vector<double>& ref_y, double time_scale,
-                                      double value_scale) {
+                                      double value_scale, bool absolute) {
   std::vector<double> xs, ys;
   for (std::size_t k = 0; k < t.size(); ++k) {
     xs.push_back(t[k] / time_scale);
@@ -33,9 +33,9 @@ std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::v
     p.x = ref_x[k];
     p.reference = ref_y[k];
     p.value = interpolate(xs, ys, p.x);
-    // Relative error; absolute where the reference is zero (no relative scale there).
+    // Relative error; absolute when asked, or where the reference is zero (no relative scale).
     const double diff = std::abs(p.value - p.reference);
-    p.error = p.reference != 0.0 ? diff / std::abs(p.reference) : diff;
+    p.error = !absolute && p.reference != 0.0 ? diff / std::abs(p.reference) : diff;
     out.push_back(p);
   }
   return out;

@@ -15,11 +15,12 @@ struct CurvePoint {
 };
 
 // t, y: the probe series (seconds, metres). ref_x, ref_y: the reference, dimensionless.
-// time_scale and value_scale turn flume's t and y into the reference's scaling.
+// time_scale and value_scale turn flume's t and y into the reference's scaling. With `absolute`
+// the error is |value - reference| in the reference's units instead of relative.
 std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::vector<double>& y,
                                       const std::vector<double>& ref_x,
                                       const std::vector<double>& ref_y, double time_scale,
-                                      double value_scale);
+                                      double value_scale, bool absolute = false);
 
 // Linear interpolation of (xs, ys) at x, xs ascending; x must lie within [xs.front(), xs.back()].
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);

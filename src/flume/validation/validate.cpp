@@ -3,17 +3,15 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "flume/case/case_reader.hpp"
-#include "flume/core/error.hpp"
 #include "flume/io/atomic_file.hpp"
 #include "flume/io/csv_table.hpp"
-#include "flume/run/runner.hpp"
 #include "flume/validation/bundled_cases.hpp"
-#include "flume/validation/curve_compare.hpp"
+#include "flume/validation/case_result.hpp"
+#include "flume/validation/report.hpp"
 
 namespace flume {
 
@@ -33,125 +31,124 @@ std::string shell_quote(const std::string& s) {
   return out + "'";
 }
 
-struct CurveResult {
-  CurveCheck check;
-  std::vector<CurvePoint> points;
-  double tolerance = 0.0;
-  std::string plot;  // PNG file name in the output folder, empty if plotting failed
-};
+// The label of a variant: the value of its override ("scheme.preset=csph" -> "csph").
+std::string variant_label(const std::string& override_text) {
+  const auto eq = override_text.find('=');
+  return eq == std::string::npos ? override_text : override_text.substr(eq + 1);
+}
 
-struct CaseResult {
-  CaseSpec spec;
-  RunResult run;
-  std::vector<CurveResult> curves;
-};
-
-// Plots flume's curve against the reference with scripts/plot_curve.py.
-std::string plot_curve(const std::filesystem::path& out_dir, const CaseResult& cr,
-                       const CurveResult& c, const std::vector<double>& t,
-                       const std::vector<double>& y, const std::vector<double>& rx,
-                       const std::vector<double>& ry) {
-  const std::string stem = cr.spec.name + "_" + c.check.probe;
-  io::CsvTable sim(out_dir / (stem + "_flume.csv"), {"x", "y"});
-  for (std::size_t k = 0; k < t.size(); ++k)
-    sim.add_row(std::vector<double>{t[k] / cr.spec.time_scale, y[k] / c.check.value_scale});
-  sim.flush();
-  io::CsvTable ref(out_dir / (stem + "_reference.csv"), {"x", "y"});
+// Plots every series of curve c against the reference with scripts/plot_curve.py; returns the
+// PNG's file name, or "" when plotting is unavailable.
+std::string plot_curve(const std::filesystem::path& out_dir, const CaseResult& cr, std::size_t c,
+                       const std::vector<io::CsvData>& probes, const io::CsvData& ref) {
+  const auto& check = cr.spec.curves[c];
+  const std::string stem = cr.spec.name + "_" + check.probe;
+  std::string args;
+  for (std::size_t s = 0; s < cr.series.size(); ++s) {
+    if (!cr.series[s].run.completed) continue;
+    const auto file = out_dir / fmt::format("{}_{}.csv", stem, cr.series[s].label);
+    io::CsvTable table(file, {"x", "y"});
+    const auto t = probes[s].column("time"), y = probes[s].column(check.probe);
+    for (std::size_t k = 0; k < t.size(); ++k)
+      table.add_row(std::vector<double>{t[k] / cr.spec.time_scale, y[k] / check.value_scale});
+    table.flush();
+    args += " --series " + shell_quote(cr.series[s].label + "=" + file.string());
+  }
+  const auto ref_file = out_dir / (stem + "_reference.csv");
+  io::CsvTable table(ref_file, {"x", "y"});
+  const auto rx = ref.column(check.reference_x), ry = ref.column(check.reference_y);
   for (std::size_t k = 0; k < rx.size(); ++k)
-    ref.add_row(std::vector<double>{rx[k], ry[k]});
-  ref.flush();
+    table.add_row(std::vector<double>{rx[k], ry[k]});
+  table.flush();
   const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_curve.py";
   const std::string png = stem + ".png";
   const std::string cmd = fmt::format(
-      "{} {} --flume {} --reference {} --out {} --title {} --xlabel {} --ylabel {} "
-      "--reference-label {} > /dev/null 2>&1",
-      python(), shell_quote(script.string()),
-      shell_quote((out_dir / (stem + "_flume.csv")).string()),
-      shell_quote((out_dir / (stem + "_reference.csv")).string()),
+      "{} {}{} --reference {} --reference-label {} --out {} --title {} --xlabel {} --ylabel {} "
+      "> /dev/null 2>&1",
+      python(), shell_quote(script.string()), args, shell_quote(ref_file.string()),
+      shell_quote(check.source.empty() ? "reference" : check.source),
       shell_quote((out_dir / png).string()),
-      shell_quote(fmt::format("{}: {} ({} particles, {})", cr.spec.name, c.check.label,
-                              cr.run.particles, cr.spec.preset)),
-      shell_quote(c.check.reference_x), shell_quote(c.check.reference_y),
-      shell_quote(c.check.source.empty() ? "reference" : c.check.source));
-  if (std::system(cmd.c_str()) != 0) return {};
-  return png;
+      shell_quote(fmt::format("{}: {} ({} particles)", cr.spec.name, check.label,
+                              cr.series.front().run.particles)),
+      shell_quote(check.reference_x), shell_quote(check.reference_y));
+  return std::system(cmd.c_str()) == 0 ? png : std::string();
 }
 
 CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   CaseResult cr;
   const auto file = bundled_case(name);
-  std::vector<std::string> overrides;
-  if (opt.quick) overrides = read_case(file, {}).quick;
-  cr.spec = read_case(file, overrides);
-  const auto run_dir = opt.out_dir / name;
-  RunOptions ro{run_dir, opt.threads, true};
-  if (!opt.quiet)
-    std::cout << fmt::format("validate {}: running into {} ...", name, run_dir.string())
-              << std::endl;
-  cr.run = run_case(cr.spec, ro);
-  if (!cr.run.completed) return cr;
-  const auto probes = io::read_csv(run_dir / "probes.csv");
-  const auto t = probes.column("time");
-  for (const auto& check : cr.spec.curves) {
-    CurveResult c;
-    c.check = check;
-    c.tolerance = opt.quick ? check.quick_tolerance : check.tolerance;
-    const auto ref = io::read_csv(check.reference);
-    const auto rx = ref.column(check.reference_x), ry = ref.column(check.reference_y);
-    const auto y = probes.column(check.probe);
-    c.points = compare_curve(t, y, rx, ry, cr.spec.time_scale, check.value_scale);
-    c.plot = plot_curve(opt.out_dir, cr, c, t, y, rx, ry);
-    cr.curves.push_back(std::move(c));
+  const CaseSpec as_written = read_case(file, {});
+  std::vector<std::string> base = opt.quick ? as_written.quick : std::vector<std::string>{};
+  cr.spec = read_case(file, base);
+  for (const auto& check : cr.spec.curves)
+    cr.tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
+
+  std::vector<std::pair<std::string, std::vector<std::string>>> configs{{cr.spec.preset, base}};
+  for (const auto& v : cr.spec.variants) {
+    auto overrides = base;
+    overrides.push_back(v);
+    configs.emplace_back(variant_label(v), overrides);
   }
+  std::vector<io::CsvData> probes;
+  for (const auto& [label, overrides] : configs) {
+    const CaseSpec spec = read_case(file, overrides);
+    const auto run_dir = opt.out_dir / name / label;
+    if (!opt.quiet)
+      std::cout << fmt::format("validate {}: {} -> {}", name, label, run_dir.string()) << std::endl;
+    SeriesResult s;
+    s.label = label;
+    s.run = run_case(spec, RunOptions{run_dir, opt.threads, true});
+    probes.push_back(s.run.completed ? io::read_csv(run_dir / "probes.csv") : io::CsvData{});
+    if (s.run.completed) {
+      const auto t = probes.back().column("time");
+      for (const auto& check : spec.curves) {
+        const auto ref = io::read_csv(check.reference);
+        s.curves.push_back(compare_curve(
+            t, probes.back().column(check.probe), ref.column(check.reference_x),
+            ref.column(check.reference_y), spec.time_scale, check.value_scale, check.absolute));
+      }
+    }
+    cr.series.push_back(std::move(s));
+  }
+  for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
+    cr.plots.push_back(
+        cr.series.front().run.completed
+            ? plot_curve(opt.out_dir, cr, c, probes, io::read_csv(cr.spec.curves[c].reference))
+            : std::string());
   return cr;
 }
 
-std::string report_markdown(const std::vector<CaseResult>& results, const ValidateOptions& opt) {
-  std::string md = fmt::format(
-      "# flume validation report\n\nflume {}{}. Errors are relative: "
-      "|flume - reference| / |reference|.\n",
-      FLUME_VERSION, opt.quick ? ", quick (reduced-resolution) set" : "");
-  for (const auto& cr : results) {
-    md += fmt::format("\n## {}\n\n{}\n\n", cr.spec.name, cr.spec.description);
-    md += fmt::format(
-        "Scheme `{}` ({} density + {} force), kernel `{}`, h/dx = {}, spacing {} m, "
-        "{} particles, {} steps, {:.1f} s wall time ({:.3g} particle-steps/s, {} "
-        "threads).\n",
-        cr.spec.preset, cr.spec.density, cr.spec.force, cr.spec.kernel, cr.spec.h_over_dx,
-        cr.spec.spacing, cr.run.particles, cr.run.steps, cr.run.wall_seconds,
-        cr.run.particle_steps_per_second, cr.run.threads);
-    if (!cr.run.completed) {
-      md += fmt::format("\n**The run failed:** {}\n", cr.run.error);
-      continue;
-    }
-    if (!cr.spec.notes.empty()) {
-      md += "\nWhat the papers report:\n\n";
-      for (const auto& n : cr.spec.notes)
-        md += "- " + n + "\n";
-    }
-    for (const auto& c : cr.curves) {
-      double max_err = 0.0, sum = 0.0;
-      for (const auto& p : c.points) {
-        max_err = std::max(max_err, p.error);
-        sum += p.error;
-      }
-      const double mean = c.points.empty() ? 0.0 : sum / static_cast<double>(c.points.size());
-      md += fmt::format(
-          "\n### {}\n\nReference: {} (`{}`). {} points compared; max error {:.1f} %, "
-          "mean {:.1f} %, tolerance {:.0f} %: **{}**.\n\n",
-          c.check.label, c.check.source, c.check.reference.filename().string(), c.points.size(),
-          100 * max_err, 100 * mean, 100 * c.tolerance,
-          !c.points.empty() && max_err <= c.tolerance ? "pass" : "FAIL");
-      md += fmt::format("| {} | reference {} | flume | error |\n|---|---|---|---|\n",
-                        c.check.reference_x, c.check.reference_y);
-      for (const auto& p : c.points)
-        md += fmt::format("| {:.3g} | {:.3g} | {:.3f} | {:.1f} % |\n", p.x, p.reference, p.value,
-                          100 * p.error);
-      md += c.plot.empty() ? "\n(plot unavailable: python3 with matplotlib not found)\n"
-                           : fmt::format("\n![{}]({})\n", c.check.label, c.plot);
+// results.json rows of the case as written (the variants are reported, not gated).
+bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
+  const auto& main = cr.series.front();
+  if (!main.run.completed) {
+    rows.push_back({{"case", cr.spec.name},
+                    {"metric", "run"},
+                    {"value", nullptr},
+                    {"reference", nullptr},
+                    {"error", main.run.error},
+                    {"tolerance", nullptr},
+                    {"pass", false}});
+    return false;
+  }
+  bool all_pass = true;
+  for (std::size_t c = 0; c < cr.spec.curves.size(); ++c) {
+    const auto& check = cr.spec.curves[c];
+    if (main.curves[c].empty()) all_pass = false;
+    for (const auto& p : main.curves[c]) {
+      const bool pass = p.error <= cr.tolerances[c];
+      all_pass = all_pass && pass;
+      rows.push_back(
+          {{"case", cr.spec.name},
+           {"metric", fmt::format("{} at {}={:.3g}", check.probe, check.reference_x, p.x)},
+           {"value", p.value},
+           {"reference", p.reference},
+           {"error", p.error},
+           {"tolerance", cr.tolerances[c]},
+           {"pass", pass}});
     }
   }
-  return md;
+  return all_pass;
 }
 
 }  // namespace
@@ -170,36 +167,10 @@ int validate(const ValidateOptions& opt) {
   bool all_pass = true;
   for (const auto& name : names) {
     results.push_back(validate_case(name, opt));
-    const auto& cr = results.back();
-    if (!cr.run.completed) {
-      all_pass = false;
-      rows.push_back({{"case", name},
-                      {"metric", "run"},
-                      {"value", nullptr},
-                      {"reference", nullptr},
-                      {"error", cr.run.error},
-                      {"tolerance", nullptr},
-                      {"pass", false}});
-      continue;
-    }
-    for (const auto& c : cr.curves) {
-      if (c.points.empty()) all_pass = false;
-      for (const auto& p : c.points) {
-        const bool pass = p.error <= c.tolerance;
-        all_pass = all_pass && pass;
-        rows.push_back(
-            {{"case", name},
-             {"metric", fmt::format("{} at {}={:.3g}", c.check.probe, c.check.reference_x, p.x)},
-             {"value", p.value},
-             {"reference", p.reference},
-             {"error", p.error},
-             {"tolerance", c.tolerance},
-             {"pass", pass}});
-      }
-    }
+    all_pass = add_result_rows(results.back(), rows) && all_pass;
   }
   io::write_file_atomic(opt.out_dir / "results.json", rows.dump(2) + "\n");
-  io::write_file_atomic(opt.out_dir / "report.md", report_markdown(results, opt));
+  io::write_file_atomic(opt.out_dir / "report.md", report_markdown(results, opt.quick));
   if (!opt.quiet) {
     std::cout << fmt::format("validation {}: report {}", all_pass ? "passed" : "FAILED",
                              (opt.out_dir / "report.md").string())

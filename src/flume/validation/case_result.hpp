@@ -1,0 +1,35 @@
+// What validating one case produced: the main run (whose metrics pass or fail) and the variant
+// runs (other schemes on the same case, reported beside it, as BL Figs 9-11 set standard,
+// inconsistent and corrected SPH side by side).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flume/case/case_spec.hpp"
+#include "flume/run/runner.hpp"
+#include "flume/validation/curve_compare.hpp"
+
+namespace flume {
+
+struct SeriesResult {
+  std::string label;  // "main" configuration's preset, or the variant's override value
+  RunResult run;
+  std::vector<std::vector<CurvePoint>> curves;  // one per CaseSpec::curves entry
+};
+
+struct CaseResult {
+  CaseSpec spec;
+  std::vector<SeriesResult> series;  // [0] is the case as written; then the variants
+  std::vector<double> tolerances;    // per curve (quick or full)
+  std::vector<std::string> plots;    // per curve: PNG file name, empty if plotting failed
+};
+
+// Max and mean of the errors of a curve.
+struct ErrorSummary {
+  double max = 0.0;
+  double mean = 0.0;
+};
+ErrorSummary summarize(const std::vector<CurvePoint>& points);
+
+}  // namespace flume

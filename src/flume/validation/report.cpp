@@ -1,0 +1,113 @@
+#include "flume/validation/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace flume {
+
+ErrorSummary summarize(const std::vector<CurvePoint>& points) {
+  ErrorSummary s;
+  for (const auto& p : points) {
+    s.max = std::max(s.max, p.error);
+    s.mean += p.error;
+  }
+  if (!points.empty()) s.mean /= static_cast<double>(points.size());
+  return s;
+}
+
+namespace {
+
+std::string run_line(const CaseSpec& spec, const SeriesResult& s) {
+  if (!s.run.completed) return fmt::format("- `{}`: **failed**: {}\n", s.label, s.run.error);
+  return fmt::format(
+      "- `{}`: {} particles, {} steps, {:.1f} s wall time ({:.3g} particle-steps/s, "
+      "{} threads), spacing {} m\n",
+      s.label, s.run.particles, s.run.steps, s.run.wall_seconds, s.run.particle_steps_per_second,
+      s.run.threads, spec.spacing);
+}
+
+// flume's value and signed error at reference abscissa x, or dashes where the series has none
+// (a failed or shorter variant run).
+std::string table_cells(const SeriesResult& s, std::size_t c, double x, bool absolute) {
+  if (c >= s.curves.size()) return " - | - |";
+  for (const auto& q : s.curves[c]) {
+    if (q.x != x) continue;
+    if (absolute) return fmt::format(" {:.3f} | {:+.3f} |", q.value, q.value - q.reference);
+    return fmt::format(" {:.3f} | {:+.1f} % |", q.value,
+                       100 * (q.value - q.reference) / std::abs(q.reference));
+  }
+  return " - | - |";
+}
+
+// An error or tolerance as the curve measures it: a percentage, or a number in its units.
+std::string amount(double e, bool absolute) {
+  return absolute ? fmt::format("{:.3f}", e) : fmt::format("{:.1f} %", 100 * e);
+}
+
+std::string curve_section(const CaseResult& cr, std::size_t c) {
+  const auto& check = cr.spec.curves[c];
+  const auto& main = cr.series.front();
+  const auto main_sum = summarize(main.curves[c]);
+  const bool pass = !main.curves[c].empty() && main_sum.max <= cr.tolerances[c];
+  const bool abs = check.absolute;
+  std::string md = fmt::format(
+      "\n### {}\n\nReference: {} (`{}`). Error {}. The case as written (`{}`): {} points, max "
+      "error {}, mean {}, tolerance {}: **{}**.\n",
+      check.label, check.source, check.reference.filename().string(),
+      abs ? "absolute, in the reference's units" : "relative", main.label, main.curves[c].size(),
+      amount(main_sum.max, abs), amount(main_sum.mean, abs), amount(cr.tolerances[c], abs),
+      pass ? "pass" : "FAIL");
+  for (std::size_t v = 1; v < cr.series.size(); ++v) {
+    const auto& s = cr.series[v];
+    if (!s.run.completed) continue;
+    const auto sum = summarize(s.curves[c]);
+    md += fmt::format("Variant `{}`: max error {}, mean {} (reported, not gated).\n", s.label,
+                      amount(sum.max, abs), amount(sum.mean, abs));
+  }
+  md += fmt::format("\n| {} | reference {} |", check.reference_x, check.reference_y);
+  std::string rule = "\n|---|---|";
+  for (const auto& s : cr.series) {
+    md += fmt::format(" `{}` | error |", s.label);
+    rule += "---|---|";
+  }
+  md += rule + "\n";
+  for (std::size_t k = 0; k < main.curves[c].size(); ++k) {
+    const auto& p = main.curves[c][k];
+    md += fmt::format("| {:.3g} | {:.3g} |", p.x, p.reference);
+    for (const auto& s : cr.series)
+      md += table_cells(s, c, p.x, abs);
+    md += "\n";
+  }
+  md += cr.plots[c].empty() ? "\n(plot unavailable: python3 with matplotlib not found)\n"
+                            : fmt::format("\n![{}]({})\n", check.label, cr.plots[c]);
+  return md;
+}
+
+}  // namespace
+
+std::string report_markdown(const std::vector<CaseResult>& results, bool quick) {
+  std::string md = fmt::format(
+      "# flume validation report\n\nflume {}{}. Errors are relative, |flume - reference| / "
+      "|reference|, unless a curve says absolute; in the tables they are signed (positive: flume "
+      "ahead of / above the reference).\n",
+      FLUME_VERSION, quick ? ", quick (reduced-resolution) set" : "");
+  for (const auto& cr : results) {
+    md += fmt::format("\n## {}\n\n{}\n\nRuns (scheme, kernel `{}`, h/dx = {}):\n\n", cr.spec.name,
+                      cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
+    for (const auto& s : cr.series)
+      md += run_line(cr.spec, s);
+    if (!cr.spec.notes.empty()) {
+      md += "\nWhat the papers report:\n\n";
+      for (const auto& n : cr.spec.notes)
+        md += "- " + n + "\n";
+    }
+    if (!cr.series.front().run.completed) continue;
+    for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
+      md += curve_section(cr, c);
+  }
+  return md;
+}
+
+}  // namespace flume
