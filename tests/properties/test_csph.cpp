@@ -9,6 +9,7 @@
 #include "flume/neighbors/cell_list.hpp"
 #include "flume/schemes/registry.hpp"
 #include "flume/sim/simulation.hpp"
+#include "support/small_cases.hpp"
 
 namespace flume {
 namespace {
@@ -99,11 +100,7 @@ AngularChange angular_change(const std::string& preset) {
   for (std::size_t i = 0; i < ps.n_real; ++i)
     out.scale += ps.m[i] * norm(ps.x[i]) * norm(ps.v_half[i]);
   const double before = angular(ps);
-  BoxWalls<2> walls;
-  walls.lo = Vec<2>{{-1.0, -1.0}};
-  walls.hi = Vec<2>{{2.0, 2.0}};
-  for (auto& axis : walls.kind)
-    axis = {WallKind::open, WallKind::open};
+  const auto walls = test::open_box<2>(-1.0, 2.0);
   Physics<2> phys;
   phys.eos.rho0 = 1000.0;
   phys.eos.kappa = 1e5;

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "flume/boundaries/box_walls.hpp"
 #include "flume/case/case_reader.hpp"
 
 namespace flume::test {
@@ -38,6 +39,19 @@ column_height = true
 )",
                      fmt::arg("end", end_time), fmt::arg("dx", a / n), fmt::arg("preset", preset),
                      fmt::arg("lx", 4 * a), fmt::arg("ly", 2 * a), fmt::arg("a", a));
+}
+
+// A box [lo, hi]^D with every side open: no ghosts, no wall forces.
+template <int D>
+BoxWalls<D> open_box(double lo, double hi) {
+  BoxWalls<D> walls;
+  for (int k = 0; k < D; ++k) {
+    walls.lo[k] = lo;
+    walls.hi[k] = hi;
+  }
+  for (auto& axis : walls.kind)
+    axis = {WallKind::open, WallKind::open};
+  return walls;
 }
 
 inline CaseSpec spec_from(const std::string& toml, const std::vector<std::string>& sets = {}) {

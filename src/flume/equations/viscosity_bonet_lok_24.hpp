@@ -18,7 +18,8 @@ template <int D>
 inline Mat<D> deviatoric_stress(const Mat<D>& grad_v, double mu) {
   Mat<D> d = (grad_v + transpose(grad_v)) * 0.5;
   const double third_tr = trace(d) / 3.0;
-  for (int k = 0; k < D; ++k) d(k, k) -= third_tr;
+  for (int k = 0; k < D; ++k)
+    d(k, k) -= third_tr;
   return d * (2.0 * mu);
 }
 
@@ -27,7 +28,8 @@ template <int D>
 void update_deviatoric_stress(ParticleSet<D>& ps, double mu) {
   const auto n = static_cast<long>(ps.size());
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) ps.stress[i] = deviatoric_stress(ps.grad_v[i], mu);
+  for (long i = 0; i < n; ++i)
+    ps.stress[i] = deviatoric_stress(ps.grad_v[i], mu);
 }
 
 // Reads ps.stress (update_deviatoric_stress).

@@ -1,7 +1,12 @@
-// Per-particle steps shared by the schemes: the equation of state and the start of the force
-// accumulation with the body force.
+// Steps shared by the schemes: the equation of state, the viscous stress through the velocity
+// gradient, and the force sweep that sums the body force, a pressure force and the viscosities.
 #pragma once
 
+#include "flume/boundaries/halo.hpp"
+#include "flume/equations/velocity_gradient_bl22.hpp"
+#include "flume/equations/viscosity_artificial_monaghan.hpp"
+#include "flume/equations/viscosity_bonet_lok_24.hpp"
+#include "flume/neighbors/neighbor_list.hpp"
 #include "flume/schemes/physics.hpp"
 #include "flume/schemes/sweep.hpp"
 
@@ -18,6 +23,31 @@ void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& 
 template <int D>
 void start_accelerations(ParticleSet<D>& ps, const Physics<D>& phys) {
   for_each_real(ps.n_real, [&](std::size_t i) { ps.a[i] = phys.gravity; });
+}
+
+// Sweep: grad v_a, BL (22); then sigma'_a = 2 mu d'_a for real and ghost particles, BL (23)-(24).
+template <int D, class Kernel>
+void update_viscous_stress(const NeighborList& nl, ParticleSet<D>& ps, const Halo<D>& halo,
+                           double mu) {
+  VelocityGradientBL22<D> gradient{ps};
+  sweep<D, Kernel>(nl, ps, gradient);
+  halo.update_velocity_gradient(ps);
+  update_deviatoric_stress(ps, mu);
+}
+
+// Sweep: a_a = g + pressure force + physical viscosity BL (24) (when mu > 0, from ps.stress) +
+// artificial viscosity W (3.18) (when alpha or beta > 0).
+template <int D, class Kernel, template <int> class Force>
+void accelerate(const NeighborList& nl, ParticleSet<D>& ps, const Physics<D>& phys) {
+  start_accelerations(ps, phys);
+  Force<D> pressure{ps};
+  ViscosityArtificialMonaghan<D> artificial{ps, phys.eos, phys.av_alpha, phys.av_beta};
+  if (phys.mu > 0.0) {
+    ViscosityBonetLok24<D> viscous{ps};
+    sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
+  } else {
+    sweep<D, Kernel>(nl, ps, pressure, artificial);
+  }
 }
 
 }  // namespace flume

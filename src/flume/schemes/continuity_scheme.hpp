@@ -9,9 +9,6 @@
 
 #include "flume/equations/continuity_density_bl4.hpp"
 #include "flume/equations/force_bonet_lok_20.hpp"
-#include "flume/equations/velocity_gradient_bl22.hpp"
-#include "flume/equations/viscosity_artificial_monaghan.hpp"
-#include "flume/equations/viscosity_bonet_lok_24.hpp"
 #include "flume/schemes/common_steps.hpp"
 #include "flume/schemes/scheme.hpp"
 
@@ -27,23 +24,8 @@ class ContinuityScheme final : public Scheme<D> {
   void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
                              const Halo<D>& halo) const override {
     update_pressure(ps, phys_, halo);
-
-    if (phys_.mu > 0.0) {
-      VelocityGradientBL22<D> gradient{ps};
-      sweep<D, Kernel>(nl, ps, gradient);
-      halo.update_velocity_gradient(ps);
-      update_deviatoric_stress(ps, phys_.mu);
-    }
-
-    start_accelerations(ps, phys_);
-    ForceBonetLok20<D> pressure{ps};
-    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
-    if (phys_.mu > 0.0) {
-      ViscosityBonetLok24<D> viscous{ps};
-      sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
-    } else {
-      sweep<D, Kernel>(nl, ps, pressure, artificial);
-    }
+    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(nl, ps, halo, phys_.mu);
+    accelerate<D, Kernel, ForceBonetLok20>(nl, ps, phys_);
   }
 
   void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,

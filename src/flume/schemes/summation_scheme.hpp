@@ -10,9 +10,6 @@
 #pragma once
 
 #include "flume/equations/density_summation.hpp"
-#include "flume/equations/velocity_gradient_bl22.hpp"
-#include "flume/equations/viscosity_artificial_monaghan.hpp"
-#include "flume/equations/viscosity_bonet_lok_24.hpp"
 #include "flume/schemes/common_steps.hpp"
 #include "flume/schemes/scheme.hpp"
 
@@ -32,22 +29,8 @@ class SummationScheme final : public Scheme<D> {
     halo.update_scalar(ps, ps.rho);
     update_pressure(ps, phys_, halo);
 
-    if (phys_.mu > 0.0) {
-      VelocityGradientBL22<D> gradient{ps};
-      sweep<D, Kernel>(nl, ps, gradient);
-      halo.update_velocity_gradient(ps);
-      update_deviatoric_stress(ps, phys_.mu);
-    }
-
-    start_accelerations(ps, phys_);
-    Force<D> pressure{ps};
-    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
-    if (phys_.mu > 0.0) {
-      ViscosityBonetLok24<D> viscous{ps};
-      sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
-    } else {
-      sweep<D, Kernel>(nl, ps, pressure, artificial);
-    }
+    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(nl, ps, halo, phys_.mu);
+    accelerate<D, Kernel, Force>(nl, ps, phys_);
   }
 
  private:
