@@ -43,11 +43,17 @@ void Simulation<D>::step(double max_dt) {
 
   scheme_->compute_accelerations(ps_, neighbors_, halo_);
 
-  double dt = config_.fixed_dt > 0.0 ? config_.fixed_dt : cfl_time_step(ps_, phys_, config_.cfl);
-  dt = std::min(dt, max_dt);
-  if (!(dt > 0.0) || !std::isfinite(dt))
+  const double dt_rule =
+      config_.fixed_dt > 0.0 ? config_.fixed_dt : cfl_time_step(ps_, phys_, config_.cfl);
+  if (steps_ == 0) first_dt_ = dt_rule;
+  // A CFL step that shrinks by four orders of magnitude means particles are flying apart or
+  // accelerating without bound: stop and say so instead of crawling on.
+  if (!(dt_rule > 1e-4 * first_dt_) || !std::isfinite(dt_rule))
     throw SimulationError(
-        fmt::format("time step collapsed to {:.3g} s at t = {:.6g} s", dt, time_));
+        fmt::format("time step collapsed to {:.3g} s (first step {:.3g} s) at "
+                    "t = {:.6g} s, step {}: the simulation blew up",
+                    dt_rule, first_dt_, time_, steps_));
+  const double dt = std::min(dt_rule, max_dt);
   integrator_.kick(ps_, dt);
   if (scheme_->evolves_density()) {
     scheme_->compute_density_rate(ps_, neighbors_, halo_);

@@ -50,6 +50,7 @@ class Simulation {
   NeighborList neighbors_;
   double time_ = 0.0;
   double last_dt_ = 0.0;
+  double first_dt_ = 0.0;  // the step rule's first value, s
   long steps_ = 0;
 };
 
