@@ -5,7 +5,6 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build git   # compiler and build
-  libomp-dev                              # OpenMP (g++ uses libgomp from build-essential)
   libtomlplusplus-dev                     # case files
   libcli11-dev                            # command line
   libfmt-dev                              # formatting
