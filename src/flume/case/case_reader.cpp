@@ -179,6 +179,7 @@ void apply_override(toml::table& user, const toml::table& defaults, const std::s
 
   toml::table* tbl = &user;
   const toml::table* def = &defaults;
+  toml::table elem_defaults;  // an array-of-tables element's schema, once the path enters one
   std::string walked;
   for (std::size_t s = 0; s + 1 < segs.size(); ++s) {
     walked += (walked.empty() ? "" : ".") + segs[s];
@@ -191,10 +192,9 @@ void apply_override(toml::table& user, const toml::table& defaults, const std::s
                         "e.g. {}[0].KEY)",
                         file, key, walked, walked));
       tbl = arr->get(std::stoul(segs[s + 1]))->as_table();
-      static thread_local toml::table elem;
-      elem =
+      elem_defaults =
           parse_defaults(walked == "fluid_blocks" ? fluid_block_defaults(dim) : curve_defaults());
-      def = &elem;
+      def = &elem_defaults;
       ++s;
       continue;
     }
