@@ -199,6 +199,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.column_height = r.boolean("probes.column_height");
   s.floor_layer = r.positive("probes.floor_layer");
   s.wall_band = r.positive("probes.wall_band");
+  s.detach_gap = r.positive("probes.detach_gap");
 
   s.quick = r.strings("validation.quick");
   s.time_scale = r.positive("validation.time_scale");

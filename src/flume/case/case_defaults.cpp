@@ -67,6 +67,8 @@ surge_front = false    # distance from domain.min along x to the leading particl
 column_height = false  # height of the water at the x_min wall
 floor_layer = 2.0      # surge front: particles within this many spacings of the floor count
 wall_band = 2.0        # column height: particles within this many spacings of the wall count
+detach_gap = 3.0       # spacings: particles farther than this from the main body of water are
+                       # spray, counted by neither probe
 
 [validation]
 quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (validate --quick)

@@ -76,6 +76,7 @@ struct CaseSpec {
   bool column_height = false;
   double floor_layer = 2.0;  // spacings
   double wall_band = 2.0;    // spacings
+  double detach_gap = 3.0;   // spacings
 
   // [validation]
   std::vector<std::string> quick;     // KEY=VALUE overrides of the reduced-resolution run

@@ -13,6 +13,7 @@
 #include "flume/core/error.hpp"
 #include "flume/io/atomic_file.hpp"
 #include "flume/probes/column_height.hpp"
+#include "flume/probes/fluid_body.hpp"
 #include "flume/probes/surge_front.hpp"
 #include "flume/run/run_output.hpp"
 #include "flume/sim/diagnostics.hpp"
@@ -57,10 +58,14 @@ std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim) {
   const double wall = spec.domain_min[0];
   const double floor = spec.domain_min[D - 1];
   std::vector<double> row{sim.time()};
+  if (!spec.surge_front && !spec.column_height) return row;
+  const auto body = main_fluid_body(ps, spec.detach_gap * spec.spacing);
   if (spec.surge_front)
-    row.push_back(surge_front(ps, wall, floor, spec.floor_layer * spec.spacing, spec.spacing));
+    row.push_back(
+        surge_front(ps, body, wall, floor, spec.floor_layer * spec.spacing, spec.spacing));
   if (spec.column_height)
-    row.push_back(column_height(ps, wall, floor, spec.wall_band * spec.spacing, spec.spacing));
+    row.push_back(
+        column_height(ps, body, wall, floor, spec.wall_band * spec.spacing, spec.spacing));
   return row;
 }
 
