@@ -136,13 +136,18 @@ TEST_F(Cli, BlowUpExitsWithOneAndSaysWhy) {
   // A fixed step 20 times the CFL limit: the density goes negative within a few steps.
   const auto file = write_case(test::dam_break_toml("continuity", 8, 0.1));
   const auto out = dir_ / "run";
-  const auto r =
-      flume("run " + file.string() + " --quiet --out " + out.string() + " --set case.dt=0.005");
+  const auto r = flume("run " + file.string() + " --quiet --out " + out.string() +
+                       " --set case.dt=0.005 --set output.snapshot_interval=1.0");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("blew up"), std::string::npos) << r.err;
   const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(summary["status"], "failed");
   EXPECT_NE(summary["error"].get<std::string>().find("blew up"), std::string::npos);
+  // The failed state is kept as the last snapshot of the series, after the one at t = 0.
+  const auto pvd = slurp(out / "snapshots" / "snapshots.pvd");
+  EXPECT_NE(pvd.find("snapshot_00001.vtu"), std::string::npos) << pvd;
+  EXPECT_TRUE(std::filesystem::exists(out / "snapshots" / "snapshot_00001.vtu"));
+  EXPECT_NE(slurp(out / "log.txt").find("failed state"), std::string::npos);
 }
 
 TEST_F(Cli, CasesListsTheBundledDamBreak) {

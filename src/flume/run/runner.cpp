@@ -171,6 +171,13 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
       result.completed = true;
     } catch (const SimulationError& e) {
       result.error = e.what();
+      // The state that failed, as the series' last snapshot: where it blew up is the first
+      // thing a user wants to see. Written after the error is recorded, so that a write
+      // failure cannot hide it.
+      if (spec.snapshot_interval > 0.0) {
+        out.add_snapshot(sim->time(), snapshot_cloud(sim->particles()));
+        out.log(fmt::format("the failed state at t = {:.6g} s is the last snapshot", sim->time()));
+      }
     }
     progress.finish();
     result.steps = sim->steps();
