@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "flume/io/csv_table.hpp"
 #include "support/small_cases.hpp"
 
@@ -39,8 +41,10 @@ class Cli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result flume(const std::string& args) {
-    const std::string cmd = std::string(FLUME_BINARY) + " " + args + " > " +
+  Result flume(const std::string& args) { return flume_env("", args); }
+  // `env` prefixes the command, e.g. "NAME=value ".
+  Result flume_env(const std::string& env, const std::string& args) {
+    const std::string cmd = env + std::string(FLUME_BINARY) + " " + args + " > " +
                             (dir_ / "stdout").string() + " 2> " + (dir_ / "stderr").string();
     const int raw = std::system(cmd.c_str());
     Result r;
@@ -148,6 +152,48 @@ TEST_F(Cli, BlowUpExitsWithOneAndSaysWhy) {
   EXPECT_NE(pvd.find("snapshot_00001.vtu"), std::string::npos) << pvd;
   EXPECT_TRUE(std::filesystem::exists(out / "snapshots" / "snapshot_00001.vtu"));
   EXPECT_NE(slurp(out / "log.txt").find("failed state"), std::string::npos);
+}
+
+TEST_F(Cli, ValidateFailsOnlyOnGatedCurves) {
+  // Two curves on one reference at t = 0, where both probes read exactly a: the column height,
+  // compared with a, passes; the surge front, compared with 2 a, is 50 % off. Reported but not
+  // gated, it leaves the validation passing; gated, it fails it with exit status 1.
+  std::ofstream(dir_ / "ref.csv") << "t,height,front\n0.0,1.0,2.0\n";
+  const auto validation = [](bool gated) {
+    return fmt::format(R"(
+[[validation.curves]]
+probe = "column_height"
+reference = "ref.csv"
+reference_x = "t"
+reference_y = "height"
+value_scale = 0.05715
+tolerance = 0.01
+quick_tolerance = 0.01
+[[validation.curves]]
+probe = "surge_front"
+reference = "ref.csv"
+reference_x = "t"
+reference_y = "front"
+value_scale = 0.05715
+tolerance = 0.1
+quick_tolerance = 0.1
+gated = {}
+)",
+                       gated);
+  };
+  const std::string env = "FLUME_CASES_DIR=" + dir_.string() + " ";
+  const auto out = dir_ / "validation";
+  for (bool gated : {false, true}) {
+    write_case(test::dam_break_toml("continuity", 8, 0.002) + validation(gated));
+    const auto r = flume_env(env, "validate case --quiet --out " + out.string());
+    EXPECT_EQ(r.status, gated ? 1 : 0) << r.err;
+    const auto rows = nlohmann::json::parse(slurp(out / "results.json"));
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0]["pass"], true);
+    EXPECT_EQ(rows[1]["pass"], false);
+    EXPECT_EQ(rows[1]["gated"], gated);
+    EXPECT_EQ(slurp(out / "report.md").find("reported, not gated") != std::string::npos, !gated);
+  }
 }
 
 TEST_F(Cli, CasesListsTheBundledDamBreak) {

@@ -224,6 +224,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       cc.absolute = r.one_of(key + ".error", {"relative", "absolute"}) == "absolute";
       cc.tolerance = r.positive(key + ".tolerance");
       cc.quick_tolerance = r.positive(key + ".quick_tolerance");
+      cc.gated = r.boolean(key + ".gated");
       s.curves.push_back(cc);
     }
   }

@@ -82,7 +82,8 @@ variants = []          # "KEY=VALUE": other configurations run and reported besi
 #   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
 #   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
 #   error = "relative" (or "absolute": in the reference's units), tolerance = 0.1,
-#   quick_tolerance = 0.1 (the largest error allowed over the compared points)
+#   quick_tolerance = 0.1 (the largest error allowed over the compared points),
+#   gated = true (false: the curve is reported beside the others but cannot fail validation)
 )toml",
                      fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
                      fmt::arg("z_walls", z_walls));
@@ -108,7 +109,7 @@ const std::string& curve_defaults() {
   static const std::string d =
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
-      "quick_tolerance = 0.1\n";
+      "quick_tolerance = 0.1\ngated = true\n";
   return d;
 }
 

@@ -27,6 +27,7 @@ struct CurveCheck {
   bool absolute = false;            // error in the reference's units instead of relative
   double tolerance = 0.1;           // max error allowed over the compared points
   double quick_tolerance = 0.1;
+  bool gated = true;  // false: reported beside the others, never fails validation
 };
 
 struct CaseSpec {

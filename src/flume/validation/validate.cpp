@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -37,12 +38,23 @@ std::string variant_label(const std::string& override_text) {
   return eq == std::string::npos ? override_text : override_text.substr(eq + 1);
 }
 
+// The file stem of curve c's plot and data: case and probe, plus the reference column when
+// another curve of the case plots the same probe.
+std::string curve_stem(const CaseSpec& spec, std::size_t c) {
+  const auto& check = spec.curves[c];
+  const auto same_probe =
+      std::count_if(spec.curves.begin(), spec.curves.end(),
+                    [&](const CurveCheck& o) { return o.probe == check.probe; });
+  std::string stem = spec.name + "_" + check.probe;
+  return same_probe > 1 ? stem + "_" + check.reference_y : stem;
+}
+
 // Plots every series of curve c against the reference with scripts/plot_curve.py; returns the
 // PNG's file name, or "" when plotting is unavailable.
 std::string plot_curve(const std::filesystem::path& out_dir, const CaseResult& cr, std::size_t c,
                        const std::vector<io::CsvData>& probes, const io::CsvData& ref) {
   const auto& check = cr.spec.curves[c];
-  const std::string stem = cr.spec.name + "_" + check.probe;
+  const std::string stem = curve_stem(cr.spec, c);
   std::string args;
   for (std::size_t s = 0; s < cr.series.size(); ++s) {
     if (!cr.series[s].run.completed) continue;
@@ -134,10 +146,10 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
   bool all_pass = true;
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c) {
     const auto& check = cr.spec.curves[c];
-    if (main.curves[c].empty()) all_pass = false;
+    if (main.curves[c].empty() && check.gated) all_pass = false;
     for (const auto& p : main.curves[c]) {
       const bool pass = p.error <= cr.tolerances[c];
-      all_pass = all_pass && pass;
+      if (check.gated) all_pass = all_pass && pass;
       rows.push_back(
           {{"case", cr.spec.name},
            {"metric", fmt::format("{} at {}={:.3g}", check.probe, check.reference_x, p.x)},
@@ -145,6 +157,7 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
            {"reference", p.reference},
            {"error", p.error},
            {"tolerance", cr.tolerances[c]},
+           {"gated", check.gated},
            {"pass", pass}});
     }
   }
