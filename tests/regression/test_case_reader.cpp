@@ -94,6 +94,12 @@ TEST(CaseReader, OutOfRangeValueIsAnError) {
                        {"fluid_blocks[0]", "inside the domain"});
   expect_one_line_with(error_of(kValid, {"scheme.density=continuity", "scheme.force=bl7"}),
                        {"scheme.force", "continuity+bl20"});
+  expect_one_line_with(error_of(kValid, {"scheme.shepard_every=-1"}),
+                       {"scheme.shepard_every", ">= 0"});
+  // A summation density is recomputed every step: a density filter would do nothing.
+  expect_one_line_with(error_of(kValid, {"scheme.preset=standard", "scheme.shepard_every=40"}),
+                       {"scheme.shepard_every", "summation", "must be 0"});
+  EXPECT_EQ(test::spec_from(kValid, {"scheme.shepard_every=40"}).shepard_every, 40);
 }
 
 TEST(CaseReader, BadOverridesAndSyntax) {

@@ -123,6 +123,13 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.cfl = r.in_range("scheme.cfl", 1e-6, 1.0);
   s.alpha = r.non_negative("scheme.alpha");
   s.beta = r.non_negative("scheme.beta");
+  s.shepard_every = static_cast<int>(r.integer("scheme.shepard_every"));
+  if (s.shepard_every < 0) r.fail("scheme.shepard_every", "must be >= 0 (0 = off)");
+  if (s.shepard_every > 0 && s.density != "continuity")
+    r.fail("scheme.shepard_every",
+           fmt::format("filters an evolved density; with density \"{}\" (recomputed every "
+                       "step) it must be 0",
+                       s.density));
 
   s.rho0 = r.positive("fluid.density");
   s.mu = r.non_negative("fluid.viscosity");

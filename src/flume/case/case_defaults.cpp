@@ -33,6 +33,8 @@ integrator = "leapfrog"  # BL (61)-(62)
 cfl = 0.3              # Courant number C_FL of BL (63)
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off
 beta = 0.0             # artificial viscosity beta, W (3.18)
+shepard_every = 0      # steps between Shepard density filters W (6.3) (W: 40); 0 = off;
+                       # continuity density only
 
 [fluid]
 density = 1000.0       # reference density rho0, kg/m^3

@@ -1,8 +1,13 @@
 // Steps shared by the schemes: the equation of state, the viscous stress through the velocity
-// gradient, and the force sweep that sums the body force, a pressure force and the viscosities.
+// gradient, the force sweep that sums the body force, a pressure force and the viscosities, and
+// the Shepard density filter.
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
 #include "flume/boundaries/halo.hpp"
+#include "flume/equations/shepard_filter_w63.hpp"
 #include "flume/equations/velocity_gradient_bl22.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
 #include "flume/equations/viscosity_bonet_lok_24.hpp"
@@ -17,6 +22,18 @@ template <int D>
 void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& halo) {
   for_each_real(ps.n_real, [&](std::size_t i) { ps.p[i] = phys.eos.pressure(ps.rho[i]); });
   halo.update_scalar(ps, ps.p);
+}
+
+// Sweep: rho_a <- Shepard average of the densities, W (6.3), then copied to the ghosts. The
+// mirror ghosts take part (W does not say, errata.md): a particle at a wall then averages over a
+// full kernel, as in the interior.
+template <int D, class Kernel>
+void shepard_filter(const NeighborList& nl, ParticleSet<D>& ps, const Halo<D>& halo) {
+  std::vector<double> filtered(ps.n_real);
+  ShepardFilterW63<D> filter{ps, filtered};
+  sweep<D, Kernel>(nl, ps, filter);
+  std::copy(filtered.begin(), filtered.end(), ps.rho.begin());
+  halo.update_scalar(ps, ps.rho);
 }
 
 // a_a = g: the external force F_a / m_a of BL (6); the internal forces are added by the sweeps.

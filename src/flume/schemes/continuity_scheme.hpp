@@ -28,6 +28,11 @@ class ContinuityScheme final : public Scheme<D> {
     accelerate<D, Kernel, ForceBonetLok20>(nl, ps, phys_);
   }
 
+  void filter_density(ParticleSet<D>& ps, const NeighborList& nl,
+                      const Halo<D>& halo) const override {
+    shepard_filter<D, Kernel>(nl, ps, halo);
+  }
+
   void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
                             const Halo<D>& halo) const override {
     halo.update_velocity(ps, ps.v_half);

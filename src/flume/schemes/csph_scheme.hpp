@@ -43,6 +43,11 @@ class CsphScheme final : public Scheme<D> {
     sweep<D, Kernel>(nl, ps, internal, artificial);
   }
 
+  void filter_density(ParticleSet<D>& ps, const NeighborList& nl,
+                      const Halo<D>& halo) const override {
+    shepard_filter<D, Kernel>(nl, ps, halo);
+  }
+
   void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
                             const Halo<D>& halo) const override {
     halo.update_velocity(ps, ps.v_half);

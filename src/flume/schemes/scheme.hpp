@@ -30,6 +30,11 @@ class Scheme {
   // v^{n+1/2} after the leap-frog kick (leapfrog.hpp says why). Ghost v_half is refreshed here.
   virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const NeighborList& /*nl*/,
                                     const Halo<D>& /*halo*/) const {}
+  // For schemes that evolve density: the Shepard density filter W (6.3) over the real
+  // particles, ghosts appended and refreshed. (A summation density is recomputed every step,
+  // so the case reader does not allow the filter with it.)
+  virtual void filter_density(ParticleSet<D>& /*ps*/, const NeighborList& /*nl*/,
+                              const Halo<D>& /*halo*/) const {}
 };
 
 }  // namespace flume

@@ -40,6 +40,8 @@ void Simulation<D>::step(double max_dt) {
   halo_.append_ghosts(ps_);
   cells_.build(ps_.x, range);
   cells_.find_neighbors(ps_.x, ps_.n_real, neighbors_);
+  if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
+    scheme_->filter_density(ps_, neighbors_, halo_);
 
   scheme_->compute_accelerations(ps_, neighbors_, halo_);
 

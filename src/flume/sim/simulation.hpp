@@ -17,6 +17,7 @@ struct SimulationConfig {
   double cfl = 0.3;       // Courant number of BL (63)
   double fixed_dt = 0.0;  // s; 0 means the CFL rule
   int resort_every = 25;  // steps between re-sorting real particles by cell (memory locality)
+  int shepard_every = 0;  // steps between Shepard density filters W (6.3); 0 = never
 };
 
 template <int D>

@@ -1,0 +1,30 @@
+// Shepard density filter, W (6.3):  rho_i <- sum_j rho_j w_j W_ij / sum_j w_j W_ij with
+// w_j = m_j / rho_j, i.e. sum_j m_j W_ij / sum_j (m_j / rho_j) W_ij (self term included).
+// A zeroth-order-consistent average of the density over the kernel: it removes the particle-scale
+// density noise that a continuity density accumulates (W applies it every 40 steps, W 6.2).
+// The result goes to `out`, not ps.rho, so that every particle averages the old densities.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "flume/core/particle_set.hpp"
+#include "flume/equations/pair.hpp"
+
+namespace flume {
+
+template <int D>
+struct ShepardFilterW63 {
+  using Acc = std::array<double, 2>;  // sum m_j W_ij, sum (m_j / rho_j) W_ij
+  const ParticleSet<D>& ps;
+  std::vector<double>& out;
+
+  Acc init(std::size_t) const { return {0.0, 0.0}; }
+  void pair(Acc& s, std::size_t, const Pair<D>& g) const {
+    s[0] += ps.m[g.j] * g.w;
+    s[1] += ps.m[g.j] / ps.rho[g.j] * g.w;
+  }
+  void finish(Acc& s, std::size_t i) const { out[i] = s[0] / s[1]; }
+};
+
+}  // namespace flume
