@@ -196,6 +196,34 @@ gated = {}
   }
 }
 
+TEST_F(Cli, ValidateAppliesSetOverridesToEveryRun) {
+  std::ofstream(dir_ / "ref.csv") << "t,height\n0.0,1.0\n";
+  write_case(test::dam_break_toml("continuity", 8, 0.002) + R"(
+[validation]
+variants = ["scheme.preset=csph"]
+[[validation.curves]]
+probe = "column_height"
+reference = "ref.csv"
+reference_x = "t"
+reference_y = "height"
+value_scale = 0.05715
+)");
+  const std::string env = "FLUME_CASES_DIR=" + dir_.string() + " ";
+  const auto out = dir_ / "validation";
+  const auto r =
+      flume_env(env, "validate case --quiet --out " + out.string() + " --set case.end_time=0.001");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* run : {"continuity", "csph"}) {
+    const auto summary = nlohmann::json::parse(slurp(out / "case" / run / "summary.json"));
+    EXPECT_DOUBLE_EQ(summary["simulated_time"].get<double>(), 0.001) << run;
+  }
+  EXPECT_NE(slurp(out / "report.md").find("`case.end_time=0.001`"), std::string::npos);
+  // An unknown key is bad input, as for `flume run`.
+  const auto bad = flume_env(env, "validate case --quiet --out " + out.string() + " --set a.b=1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("a.b"), std::string::npos) << bad.err;
+}
+
 TEST_F(Cli, CasesListsTheBundledDamBreak) {
   const auto r = flume("cases");
   EXPECT_EQ(r.status, 0);

@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
   std::string vout = "validation";
   val->add_option("names", vopt.names, "bundled case names (default: all with references)");
   val->add_flag("--quick", vopt.quick, "the reduced-resolution set that CI runs");
+  val->add_option("--set", vopt.sets,
+                  "override a case-file value in every run: KEY=VALUE (dotted TOML path)")
+      ->allow_extra_args(false);
   val->add_option("--out", vout, "output folder (default validation/)");
   val->add_option("--threads", vopt.threads, "OpenMP threads")->check(CLI::PositiveNumber);
   val->add_flag("--quiet", vopt.quiet, "no messages");

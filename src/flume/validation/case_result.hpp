@@ -20,9 +20,10 @@ struct SeriesResult {
 
 struct CaseResult {
   CaseSpec spec;
-  std::vector<SeriesResult> series;  // [0] is the case as written; then the variants
-  std::vector<double> tolerances;    // per curve (quick or full)
-  std::vector<std::string> plots;    // per curve: PNG file name, empty if plotting failed
+  std::vector<SeriesResult> series;    // [0] is the case as written; then the variants
+  std::vector<double> tolerances;      // per curve (quick or full)
+  std::vector<std::string> plots;      // per curve: PNG file name, empty if plotting failed
+  std::vector<std::string> overrides;  // --set KEY=VALUE given to validate, in every run
 };
 
 // Max and mean of the errors of a curve.

@@ -101,6 +101,12 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
                       cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
     for (const auto& s : cr.series)
       md += run_line(cr.spec, s);
+    if (!cr.overrides.empty()) {
+      md += "\nEvery run with `--set`:";
+      for (const auto& o : cr.overrides)
+        md += " `" + o + "`";
+      md += " (not the case as bundled).\n";
+    }
     if (!cr.spec.notes.empty()) {
       md += "\nWhat the papers report:\n\n";
       for (const auto& n : cr.spec.notes)

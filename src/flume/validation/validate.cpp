@@ -91,6 +91,8 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   const auto file = bundled_case(name);
   const CaseSpec as_written = read_case(file, {});
   std::vector<std::string> base = opt.quick ? as_written.quick : std::vector<std::string>{};
+  base.insert(base.end(), opt.sets.begin(), opt.sets.end());
+  cr.overrides = opt.sets;
   cr.spec = read_case(file, base);
   for (const auto& check : cr.spec.curves)
     cr.tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);

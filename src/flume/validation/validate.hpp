@@ -12,6 +12,7 @@ namespace flume {
 struct ValidateOptions {
   std::vector<std::string> names;  // bundled case names; empty = every case with references
   bool quick = false;              // the reduced-resolution set (each case's validation.quick)
+  std::vector<std::string> sets;   // --set KEY=VALUE, applied to every run after the quick set
   std::filesystem::path out_dir = "validation";
   int threads = 0;
   bool quiet = false;
