@@ -21,15 +21,16 @@ std::vector<char> main_fluid_body(const ParticleSet<D>& ps, double gap) {
   const std::size_t n = ps.n_real;
   using Key = std::int64_t;
   auto cell_of = [gap](const Vec<D>& x, int k) { return static_cast<Key>(std::floor(x[k] / gap)); };
-  // Each coordinate's cell index is packed in 21 bits: 2 million cells a side, far more than
-  // any case holds at once.
+  // Each coordinate's cell index is packed in 21 bits (unsigned, so the shifts are defined for
+  // negative indices too). Cells 2^21 apart share a key; that costs only a distance test, since
+  // every candidate is checked against `gap`.
   auto key_of = [](const std::array<Key, D>& c) {
-    Key key = 0;
+    std::uint64_t key = 0;
     for (int k = 0; k < D; ++k)
-      key = (key << 21) | (c[k] & ((Key{1} << 21) - 1));
+      key = (key << 21) | (static_cast<std::uint64_t>(c[k]) & ((std::uint64_t{1} << 21) - 1));
     return key;
   };
-  std::unordered_map<Key, std::vector<std::size_t>> grid;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
   std::vector<std::array<Key, D>> cells(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (int k = 0; k < D; ++k)
