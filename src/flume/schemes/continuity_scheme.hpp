@@ -10,27 +10,20 @@
 #include "flume/equations/continuity_density_bl4.hpp"
 #include "flume/equations/force_bonet_lok_20.hpp"
 #include "flume/schemes/common_steps.hpp"
-#include "flume/schemes/scheme.hpp"
+#include "flume/schemes/evolved_density_scheme.hpp"
 
 namespace flume {
 
 template <int D, class Kernel>
-class ContinuityScheme final : public Scheme<D> {
+class ContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
  public:
   explicit ContinuityScheme(Physics<D> phys) : phys_(std::move(phys)) {}
-  double support() const override { return Kernel::support; }
-  bool evolves_density() const override { return true; }
 
   void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
                              const Halo<D>& halo) const override {
     update_pressure(ps, phys_, halo);
     if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(nl, ps, halo, phys_.mu);
     accelerate<D, Kernel, ForceBonetLok20>(nl, ps, phys_);
-  }
-
-  void filter_density(ParticleSet<D>& ps, const NeighborList& nl,
-                      const Halo<D>& halo) const override {
-    shepard_filter<D, Kernel>(nl, ps, halo);
   }
 
   void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,

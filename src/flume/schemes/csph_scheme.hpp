@@ -15,16 +15,14 @@
 #include "flume/equations/shepard_gamma_bl57.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
 #include "flume/schemes/common_steps.hpp"
-#include "flume/schemes/scheme.hpp"
+#include "flume/schemes/evolved_density_scheme.hpp"
 
 namespace flume {
 
 template <int D, class Kernel>
-class CsphScheme final : public Scheme<D> {
+class CsphScheme final : public EvolvedDensityScheme<D, Kernel> {
  public:
   explicit CsphScheme(Physics<D> phys) : phys_(std::move(phys)) {}
-  double support() const override { return Kernel::support; }
-  bool evolves_density() const override { return true; }
 
   void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
                              const Halo<D>& halo) const override {
@@ -41,11 +39,6 @@ class CsphScheme final : public Scheme<D> {
     ForceCsphBL59<D> internal{ps, phys_.mu};
     ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
     sweep<D, Kernel>(nl, ps, internal, artificial);
-  }
-
-  void filter_density(ParticleSet<D>& ps, const NeighborList& nl,
-                      const Halo<D>& halo) const override {
-    shepard_filter<D, Kernel>(nl, ps, halo);
   }
 
   void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
