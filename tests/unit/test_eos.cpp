@@ -73,6 +73,8 @@ TEST(TaitEos, PressureDerivativeIsSoundSpeedSquared) {
     // carry ~ (gamma + 1) ulp of kappa (rho / rho0)^gamma ~ 8 * 2.2e-16 * 7.4e4 ~ 1.3e-10 each,
     // over 2 dx: ~1.3e-7. Against c^2 ~ 400 both are < 1e-9 relative; 1e-8 leaves a margin.
     EXPECT_NEAR(fd, c * c, 1e-8 * c * c) << "rho " << rho;
+    // The pressure form: the same value up to the rounding of p, sqrt and pow (a few ulp of c).
+    EXPECT_NEAR(e.sound_speed(rho, e.pressure(rho)), c, 8.0 * kEps * c) << "rho " << rho;
   }
 }
 

@@ -18,6 +18,9 @@ struct TaitEos {
   double sound_speed(double rho) const {
     return std::sqrt(gamma * kappa / rho0 * std::pow(rho / rho0, gamma - 1.0));
   }
+  // The same c from a pressure already computed, without a pow: since p + kappa =
+  // kappa (rho/rho0)^gamma, dp/drho = gamma (p + kappa) / rho. For the pair loops.
+  double sound_speed(double rho, double p) const { return std::sqrt(gamma * (p + kappa) / rho); }
   double reference_sound_speed() const { return std::sqrt(gamma * kappa / rho0); }
 
   // Stored elastic energy per unit mass, e(rho) = int_{rho0}^{rho} p / rho'^2 drho', the U of

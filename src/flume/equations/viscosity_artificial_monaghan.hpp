@@ -32,7 +32,10 @@ struct ViscosityArtificialMonaghan {
     if (ux >= 0.0) return;
     const double mu_ij = g.h * ux / (g.r * g.r + 0.01 * g.h * g.h);
     const double rho_bar = 0.5 * (ps.rho[i] + ps.rho[g.j]);
-    const double c_bar = 0.5 * (eos.sound_speed(ps.rho[i]) + eos.sound_speed(ps.rho[g.j]));
+    // From the pressures the sweep already has (ghosts' refreshed too): two square roots per
+    // pair instead of two pows.
+    const double c_bar =
+        0.5 * (eos.sound_speed(ps.rho[i], ps.p[i]) + eos.sound_speed(ps.rho[g.j], ps.p[g.j]));
     const double pi_ij = rho_bar * mu_ij * (-alpha * c_bar + beta * mu_ij);
     a -= g.gradw * (ps.m[g.j] * pi_ij / (rho_bar * rho_bar));
   }
