@@ -53,6 +53,14 @@ class Cli : public ::testing::Test {
     r.err = slurp(dir_ / "stderr");
     return r;
   }
+  // A run that failed: exit status 1, and `why` both on stderr and in summary.json.
+  void expect_failed_run(const Result& r, const fs::path& out, const std::string& why) {
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+    const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    EXPECT_EQ(summary["status"], "failed");
+    EXPECT_NE(summary["error"].get<std::string>().find(why), std::string::npos);
+  }
   fs::path write_case(const std::string& toml) {
     const auto p = dir_ / "case.toml";
     std::ofstream(p) << toml;
@@ -127,11 +135,7 @@ TEST_F(Cli, FailedSimulationExitsWithOneAndKeepsItsOutput) {
   const auto out = dir_ / "run";
   const auto r = flume("run " + file.string() + " --out " + out.string() +
                        " --set boundaries.y_min=open --set output.interval=0.01");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("lost"), std::string::npos) << r.err;
-  const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
-  EXPECT_EQ(summary["status"], "failed");
-  EXPECT_NE(summary["error"].get<std::string>().find("lost"), std::string::npos);
+  expect_failed_run(r, out, "lost");
   EXPECT_GT(io::read_csv(out / "diagnostics.csv").rows.size(), 2u);
   EXPECT_NE(slurp(out / "log.txt").find("failed"), std::string::npos);
 }
@@ -142,11 +146,7 @@ TEST_F(Cli, BlowUpExitsWithOneAndSaysWhy) {
   const auto out = dir_ / "run";
   const auto r = flume("run " + file.string() + " --quiet --out " + out.string() +
                        " --set case.dt=0.005 --set output.snapshot_interval=1.0");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("blew up"), std::string::npos) << r.err;
-  const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
-  EXPECT_EQ(summary["status"], "failed");
-  EXPECT_NE(summary["error"].get<std::string>().find("blew up"), std::string::npos);
+  expect_failed_run(r, out, "blew up");
   // The failed state is kept as the last snapshot of the series, after the one at t = 0.
   const auto pvd = slurp(out / "snapshots" / "snapshots.pvd");
   EXPECT_NE(pvd.find("snapshot_00001.vtu"), std::string::npos) << pvd;

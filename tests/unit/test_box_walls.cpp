@@ -338,13 +338,19 @@ Mat<2> floor_ghost_gradient(WallKind kind, const Mat<2>& G) {
   return ps.grad_v[1];
 }
 
+// [[a, b], [c, d]]
+Mat<2> mat2(double a, double b, double c, double d) {
+  Mat<2> m;
+  m(0, 0) = a;
+  m(0, 1) = b;
+  m(1, 0) = c;
+  m(1, 1) = d;
+  return m;
+}
+
 TEST(BoxWalls, FreeSlipFloorFlipsShearComponentsOfTheGradient) {
   const double a = 1.5, b = -2.25, c = 0.75, d = 3.0;
-  Mat<2> G;
-  G(0, 0) = a;
-  G(0, 1) = b;
-  G(1, 0) = c;
-  G(1, 1) = d;
+  const Mat<2> G = mat2(a, b, c, d);
   // S = P = diag(1, -1): [[a, b], [c, d]] -> [[a, -b], [-c, d]].
   const Mat<2> got = floor_ghost_gradient(WallKind::free_slip, G);
   EXPECT_EQ(got(0, 0), a);
@@ -358,11 +364,7 @@ TEST(BoxWalls, NoSlipFloorGradientIsPGS) {
   // du/dy (the wall shear) is kept, the normal derivative of the normal velocity d is kept, the
   // tangential derivatives a and c flip. (The ghost field is v'(x, y) = -v(x, -y).)
   const double a = 1.5, b = -2.25, c = 0.75, d = 3.0;
-  Mat<2> G;
-  G(0, 0) = a;
-  G(0, 1) = b;
-  G(1, 0) = c;
-  G(1, 1) = d;
+  const Mat<2> G = mat2(a, b, c, d);
   const Mat<2> got = floor_ghost_gradient(WallKind::no_slip, G);
   EXPECT_EQ(got(0, 0), -a);
   EXPECT_EQ(got(0, 1), b);
