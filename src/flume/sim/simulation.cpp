@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -31,15 +32,20 @@ void Simulation<D>::step(double max_dt) {
 
   // Re-sort real particles by cell now and then, so neighbours sit close in memory. The order
   // depends only on positions, so results stay independent of the thread count.
+  std::optional<PhaseClock::Scope> phase;
+  phase.emplace(&clock_, "neighbours");
   if (config_.resort_every > 0 && steps_ % config_.resort_every == 0) {
     cells_.build(std::span<const Vec<D>>(ps_.x.data(), ps_.n_real), range);
     ps_.permute(cells_.cell_order(ps_.n_real));
   }
 
+  phase.emplace(&clock_, "boundaries");
   walls_.build_halo(ps_, range, halo_);
   halo_.append_ghosts(ps_);
+  phase.emplace(&clock_, "neighbours");
   cells_.build(ps_.x, range);
   cells_.find_neighbors(ps_.x, ps_.n_real, neighbors_);
+  phase.emplace(&clock_, "sweeps");
   if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
     scheme_->filter_density(ps_, neighbors_, halo_);
 
@@ -56,14 +62,19 @@ void Simulation<D>::step(double max_dt) {
                     "t = {:.6g} s, step {}: the simulation blew up",
                     dt_rule, first_dt_, time_, steps_));
   const double dt = std::min(dt_rule, max_dt);
+  phase.emplace(&clock_, "integration");
   integrator_.kick(ps_, dt);
   if (scheme_->evolves_density()) {
+    phase.emplace(&clock_, "sweeps");
     scheme_->compute_density_rate(ps_, neighbors_, halo_);
+    phase.emplace(&clock_, "integration");
     integrator_.advance_density(ps_, dt);
   }
   integrator_.drift(ps_, dt);
+  phase.emplace(&clock_, "boundaries");
   ps_.drop_ghosts();
   walls_.reflect_crossings(ps_, range);
+  phase.emplace(&clock_, "checks");
   time_ += dt;
   last_dt_ = dt;
   ++steps_;

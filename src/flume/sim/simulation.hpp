@@ -9,6 +9,7 @@
 #include "flume/integrators/leapfrog.hpp"
 #include "flume/neighbors/cell_list.hpp"
 #include "flume/schemes/scheme.hpp"
+#include "flume/sim/phase_clock.hpp"
 
 namespace flume {
 
@@ -36,6 +37,9 @@ class Simulation {
   const ParticleSet<D>& particles() const { return ps_; }
   const Physics<D>& physics() const { return phys_; }
   std::size_t ghosts() const { return halo_.size(); }
+  // Seconds spent in each phase of the steps taken so far (flume bench).
+  PhaseClock& phase_clock() { return clock_; }
+  const PhaseClock& phase_clock() const { return clock_; }
 
  private:
   void check_state() const;
@@ -53,6 +57,7 @@ class Simulation {
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;  // the step rule's first value, s
   long steps_ = 0;
+  PhaseClock clock_;
 };
 
 extern template class Simulation<2>;
