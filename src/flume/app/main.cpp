@@ -1,11 +1,12 @@
-// The flume command line: turns arguments into a CaseSpec (or validation options) and calls the
-// library. Exit status (spec/contract.md): 0 success, 1 the simulation or a validation failed,
-// 2 bad input.
+// The flume command line: turns arguments into a CaseSpec (or validation or bench options) and
+// calls the library. Exit status (spec/contract.md): 0 success, 1 the simulation or a validation
+// failed, 2 bad input.
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
+#include "flume/bench/bench.hpp"
 #include "flume/case/case_reader.hpp"
 #include "flume/core/error.hpp"
 #include "flume/run/runner.hpp"
@@ -72,6 +73,27 @@ int main(int argc, char** argv) {
   val->add_option("--threads", vopt.threads, "OpenMP threads")->check(CLI::PositiveNumber);
   val->add_flag("--quiet", vopt.quiet, "no messages");
 
+  auto* ben = app.add_subcommand(
+      "bench", "throughput benchmark: the dam break scaled to N particles; writes bench.json");
+  flume::BenchOptions bopt;
+  std::string bout = ".";
+  int bsteps = 0;
+  ben->add_option("--particles", bopt.particles,
+                  "particle counts, e.g. 1e5 or 1e4,1e5 (default 1e4,1e5,1e6,4e6)")
+      ->delimiter(',');
+  ben->add_option("--preset", bopt.presets,
+                  "scheme presets, e.g. csph or standard,csph (default standard,continuity,csph)")
+      ->delimiter(',');
+  ben->add_option("--threads", bopt.threads, "OpenMP thread counts, e.g. 1,2 (default all cores)")
+      ->delimiter(',');
+  auto* steps_opt =
+      ben->add_option("--steps", bsteps,
+                      "measured steps of every run (default 200 to 3e4 particles, 50 to 3e5, 10)");
+  ben->add_option("--warmup", bopt.warmup, "steps before the clock starts (default 3)");
+  ben->add_option("--support", bopt.support, "kernel support in spacings (default 2.83)");
+  ben->add_option("--out", bout, "folder of bench.json (default the current directory)");
+  ben->add_flag("--quiet", bopt.quiet, "no progress lines");
+
   app.add_subcommand("cases", "list the bundled cases");
 
   try {
@@ -83,6 +105,11 @@ int main(int argc, char** argv) {
 
   try {
     if (run->parsed()) return cmd_run(case_file, out, sets, threads, quiet);
+    if (ben->parsed()) {
+      bopt.out_dir = bout;
+      if (steps_opt->count() > 0) bopt.steps = bsteps;
+      return flume::bench(bopt);
+    }
     if (val->parsed()) {
       vopt.out_dir = vout;
       return flume::validate(vopt);

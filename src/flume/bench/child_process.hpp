@@ -1,0 +1,29 @@
+// Running a piece of work in a forked child process: `flume bench` runs each configuration in
+// its own child so that the child's peak resident memory (from wait4) is that run's alone, and
+// so that runs cannot affect each other (heap growth, a crash, a blow-up).
+//
+// The caller must not have started OpenMP threads (entered a parallel region) before forking:
+// the child inherits the runtime's bookkeeping but not its threads, and GCC's libgomp can then
+// hang in the child's first parallel region. The bench's parent process only reads case files.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace flume {
+
+struct ChildResult {
+  bool exited = false;      // the child returned from `body` and exited normally
+  int exit_code = -1;       // its exit status when `exited`
+  int signal = 0;           // the signal that killed it otherwise (e.g. 9: out of memory)
+  std::string output;       // what `body` returned, sent back through a pipe
+  long peak_rss_bytes = 0;  // the child's peak resident set size (rusage.ru_maxrss)
+};
+
+// Forks; the child runs `body`, writes its return value to a pipe and exits with status 0 (1
+// if `body` throws, whose message is then the output). The parent reads the pipe to its end,
+// reaps the child with wait4 and returns what it got. Throws std::runtime_error if the pipe or
+// the fork cannot be created.
+ChildResult run_in_child(const std::function<std::string()>& body);
+
+}  // namespace flume

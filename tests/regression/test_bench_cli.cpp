@@ -1,0 +1,118 @@
+// `flume bench` as a user runs it: a tiny benchmark (2000 particles, 3 steps, one thread) exits
+// with 0 and writes bench.json with every key of the speed issue and sane values; bad input
+// (an unknown preset, no particles, an --out that cannot be a folder) exits with 2 and one line.
+// Speed itself is never asserted: the figures depend on the machine.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace flume {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class BenchCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("flume_bench_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result flume(const std::string& args) {
+    const std::string cmd = std::string(FLUME_BINARY) + " " + args + " > " +
+                            (dir_ / "stdout").string() + " 2> " + (dir_ / "stderr").string();
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir_ / "stdout");
+    r.err = slurp(dir_ / "stderr");
+    return r;
+  }
+  fs::path dir_;
+};
+
+TEST_F(BenchCli, TinyRunWritesBenchJson) {
+  const auto out = dir_ / "bench";
+  const auto r =
+      flume("bench --particles 2000 --steps 3 --preset standard --threads 1 --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("standard"), std::string::npos) << r.out;
+
+  const auto list = nlohmann::json::parse(slurp(out / "bench.json"));
+  ASSERT_TRUE(list.is_array());
+  ASSERT_EQ(list.size(), 1u);
+  const auto& run = list[0];
+  for (const char* k :
+       {"preset", "particles", "neighbours", "steps", "wall_seconds", "particle_steps_per_second",
+        "interactions_per_second", "bytes_per_particle", "threads", "phases"})
+    EXPECT_TRUE(run.contains(k)) << k;
+  EXPECT_EQ(run["preset"], "standard");
+  // 2000 requested: a square column of round(sqrt(2000))^2 = 45^2 = 2025 particles.
+  const double n = run["particles"].get<double>();
+  EXPECT_NEAR(n, 2000.0, 0.05 * 2000.0);
+  // Support 2.83 spacings: 24 neighbours inside the lattice, fewer at the surface and walls.
+  const double neighbours = run["neighbours"].get<double>();
+  EXPECT_GT(neighbours, 15.0);
+  EXPECT_LT(neighbours, 30.0);
+  EXPECT_EQ(run["steps"], 3);
+  EXPECT_EQ(run["threads"], 1);
+  const double wall = run["wall_seconds"].get<double>();
+  const double psps = run["particle_steps_per_second"].get<double>();
+  EXPECT_GT(wall, 0.0);
+  EXPECT_NEAR(psps, n * 3.0 / wall, 1e-9 * psps);
+  EXPECT_NEAR(run["interactions_per_second"].get<double>(), psps * neighbours, 1e-9 * psps * 30);
+  EXPECT_GT(run["bytes_per_particle"].get<double>(), 0.0);
+
+  const auto& phases = run["phases"];
+  ASSERT_TRUE(phases.is_object());
+  EXPECT_FALSE(phases.empty());
+  EXPECT_TRUE(phases.contains("output"));
+  double total = 0.0;
+  for (const auto& [name, seconds] : phases.items()) {
+    EXPECT_GE(seconds.get<double>(), 0.0) << name;
+    total += seconds.get<double>();
+  }
+  // The phases are parts of the timed steps.
+  EXPECT_GT(total, 0.0);
+  EXPECT_LE(total, wall * 1.01);
+}
+
+TEST_F(BenchCli, BadInputExitsWithTwoAndOneLine) {
+  std::ofstream(dir_ / "a_file") << "x";
+  for (const std::string& args : std::vector<std::string>{
+           "--preset bogus", "--particles 0", "--out " + (dir_ / "a_file" / "sub").string()}) {
+    const auto r = flume("bench --steps 1 --particles 2000 --threads 1 " + args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const auto r = flume("bench --preset bogus --out " + dir_.string());
+  EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
+  // Nothing ran, so nothing was written.
+  EXPECT_FALSE(fs::exists(dir_ / "bench.json"));
+}
+
+}  // namespace
+}  // namespace flume
