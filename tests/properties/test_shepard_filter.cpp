@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "flume/neighbors/cell_list.hpp"
 #include "flume/schemes/registry.hpp"
+#include "support/rates.hpp"
 
 namespace flume {
 namespace {
@@ -36,12 +36,8 @@ void filter(ParticleSet<2>& ps, const std::string& preset, KernelKind kernel) {
   phys.eos.rho0 = kRho0;
   phys.eos.kappa = 1e5;
   auto scheme = make_scheme<2>(*preset_rows(preset), kernel, phys);
-  CellList<2> cells;
-  NeighborList nl;
-  cells.build(ps.x, scheme->support() * 1.3 * kDx);
-  cells.find_neighbors(ps.x, ps.n_real, nl);
-  Halo<2> halo;  // no walls: the free edges of the cloud are averaged over what is there
-  scheme->filter_density(ps, nl, halo);
+  // No walls: the free edges of the cloud are averaged over what is there.
+  test::filter_density(*scheme, ps);
 }
 
 TEST(ShepardFilter, ConstantDensityIsAFixedPointOnAnIrregularCloud) {

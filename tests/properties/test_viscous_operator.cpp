@@ -3,8 +3,8 @@
 // factor or sign here would change every viscous result (the dam break is run with mu = 0.5).
 #include <gtest/gtest.h>
 
-#include "flume/neighbors/cell_list.hpp"
 #include "flume/schemes/registry.hpp"
+#include "support/rates.hpp"
 
 namespace flume {
 namespace {
@@ -39,12 +39,7 @@ Vec<2> viscous_acceleration_at_centre(const std::string& preset, KernelKind kern
   phys.eos.kappa = 1e5;
   phys.mu = mu;
   auto scheme = make_scheme<2>(*preset_rows(preset), kernel, phys);
-  CellList<2> cells;
-  NeighborList nl;
-  cells.build(l.ps.x, scheme->support() * 1.5 * dx);
-  cells.find_neighbors(l.ps.x, l.ps.n_real, nl);
-  Halo<2> halo;
-  scheme->compute_accelerations(l.ps, nl, halo);
+  test::compute_rates(*scheme, l.ps);
   return l.ps.a[l.centre];
 }
 

@@ -5,8 +5,10 @@
 // walls' maps.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
+#include <vector>
 
 #include "flume/boundaries/halo.hpp"
 
@@ -21,51 +23,79 @@ struct BoxWalls {
 
   // Rebuilds the halo: one ghost per (particle, non-empty set of nearby walls with at most one
   // wall per axis). range is the kernel support radius. Deterministic order: by particle, then
-  // by wall combination.
+  // by wall combination (a count per particle, a prefix sum, then a parallel fill).
   void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo) const {
-    halo.clear();
-    for (std::size_t i = 0; i < ps.n_real; ++i) {
-      // choice[k]: 0 none, 1 lower wall, 2 upper wall
-      std::array<int, D> near{};
-      for (int k = 0; k < D; ++k) {
-        near[k] = 0;
-        if (kind[k][0] != WallKind::open && ps.x[i][k] - lo[k] < range) near[k] |= 1;
-        if (kind[k][1] != WallKind::open && hi[k] - ps.x[i][k] < range) near[k] |= 2;
-      }
-      std::array<int, D> choice{};
-      while (true) {
-        int k = 0;
-        // next combination in lexicographic order over choice[k] in {0, 1, 2}
-        while (k < D) {
-          if (++choice[k] <= 2) break;
-          choice[k++] = 0;
-        }
-        if (k == D) break;
-        bool valid = true;
-        for (int a = 0; a < D; ++a)
-          if (choice[a] != 0 && !(near[a] & choice[a])) valid = false;
-        if (!valid) continue;
-        GhostMap<D> g;
-        g.source = static_cast<std::uint32_t>(i);
-        for (int a = 0; a < D; ++a) {
-          g.scale[a] = 1.0;
-          g.vscale[a] = 1.0;
-        }
-        for (int a = 0; a < D; ++a) {
-          if (choice[a] == 0) continue;
-          const double wall = choice[a] == 1 ? lo[a] : hi[a];
-          g.scale[a] = -1.0;
-          g.shift[a] = 2.0 * wall;
-          if (kind[a][choice[a] - 1] == WallKind::no_slip) {
-            for (int b = 0; b < D; ++b)
-              g.vscale[b] = -g.vscale[b];
-          } else {
-            g.vscale[a] = -g.vscale[a];
-          }
-        }
-        halo.add(g);
-      }
+    const auto n = static_cast<long>(ps.n_real);
+    std::vector<std::uint32_t>& first = first_ghost_;
+    first.resize(ps.n_real + 1);
+#pragma omp parallel for schedule(static)
+    for (long ii = 0; ii < n; ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
+      first[i + 1] = static_cast<std::uint32_t>(for_each_image(ps.x[i], range, [](auto&&) {}));
     }
+    first[0] = 0;
+    for (std::size_t i = 0; i < ps.n_real; ++i)
+      first[i + 1] += first[i];
+    auto& maps = halo.resize(first[ps.n_real]);
+#pragma omp parallel for schedule(static)
+    for (long ii = 0; ii < n; ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
+      std::size_t k = first[i];
+      for_each_image(ps.x[i], range, [&](GhostMap<D> g) {
+        g.source = static_cast<std::uint32_t>(i);
+        maps[k++] = g;
+      });
+    }
+  }
+
+  // Calls f(map) for each mirror image of a particle at x (source not set); returns how many.
+  template <class F>
+  int for_each_image(const Vec<D>& x, double range, F&& f) const {
+    // choice[k]: 0 none, 1 lower wall, 2 upper wall
+    std::array<int, D> near{};
+    bool any = false;
+    for (int k = 0; k < D; ++k) {
+      near[k] = 0;
+      if (kind[k][0] != WallKind::open && x[k] - lo[k] < range) near[k] |= 1;
+      if (kind[k][1] != WallKind::open && hi[k] - x[k] < range) near[k] |= 2;
+      any = any || near[k] != 0;
+    }
+    if (!any) return 0;
+    int count = 0;
+    std::array<int, D> choice{};
+    while (true) {
+      int k = 0;
+      // next combination in lexicographic order over choice[k] in {0, 1, 2}
+      while (k < D) {
+        if (++choice[k] <= 2) break;
+        choice[k++] = 0;
+      }
+      if (k == D) break;
+      bool valid = true;
+      for (int a = 0; a < D; ++a)
+        if (choice[a] != 0 && !(near[a] & choice[a])) valid = false;
+      if (!valid) continue;
+      GhostMap<D> g;
+      for (int a = 0; a < D; ++a) {
+        g.scale[a] = 1.0;
+        g.vscale[a] = 1.0;
+      }
+      for (int a = 0; a < D; ++a) {
+        if (choice[a] == 0) continue;
+        const double wall = choice[a] == 1 ? lo[a] : hi[a];
+        g.scale[a] = -1.0;
+        g.shift[a] = 2.0 * wall;
+        if (kind[a][choice[a] - 1] == WallKind::no_slip) {
+          for (int b = 0; b < D; ++b)
+            g.vscale[b] = -g.vscale[b];
+        } else {
+          g.vscale[a] = -g.vscale[a];
+        }
+      }
+      f(g);
+      ++count;
+    }
+    return count;
   }
 
   // A particle that has stepped across a mirror wall is replaced by its mirror image (W (6.8),
@@ -73,7 +103,10 @@ struct BoxWalls {
   // image is the state the mirror condition implies. Its velocities are mapped as the ghost's are.
   // Particles further out than `range` are left alone for first_outside() to report.
   void reflect_crossings(ParticleSet<D>& ps, double range) const {
-    for (std::size_t i = 0; i < ps.n_real; ++i) {
+    const auto n = static_cast<long>(ps.n_real);
+#pragma omp parallel for schedule(static)
+    for (long ii = 0; ii < n; ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
       for (int k = 0; k < D; ++k) {
         for (int side = 0; side < 2; ++side) {
           const WallKind w = kind[k][side];
@@ -97,11 +130,19 @@ struct BoxWalls {
   // Index of the first real particle outside the box, or -1. Walls are impermeable and open
   // sides let particles leave the domain: either way such a particle is lost to the run.
   long first_outside(const ParticleSet<D>& ps) const {
-    for (std::size_t i = 0; i < ps.n_real; ++i)
+    const auto n = static_cast<long>(ps.n_real);
+    long first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+    for (long i = 0; i < n; ++i)
       for (int k = 0; k < D; ++k)
-        if (!(ps.x[i][k] >= lo[k] && ps.x[i][k] <= hi[k])) return static_cast<long>(i);
-    return -1;
+        if (!(ps.x[static_cast<std::size_t>(i)][k] >= lo[k] &&
+              ps.x[static_cast<std::size_t>(i)][k] <= hi[k]))
+          first = std::min(first, i);
+    return first < n ? first : -1;
   }
+
+  // Scratch of build_halo: per particle, the index of its first ghost (reused between steps).
+  mutable std::vector<std::uint32_t> first_ghost_;
 };
 
 }  // namespace flume

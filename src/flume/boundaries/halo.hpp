@@ -25,14 +25,35 @@ class Halo {
  public:
   void clear() { maps_.clear(); }
   void add(const GhostMap<D>& g) { maps_.push_back(g); }
+  // n maps to be filled in place (by the boundary that builds the halo).
+  std::vector<GhostMap<D>>& resize(std::size_t n) {
+    maps_.resize(n);
+    return maps_;
+  }
   std::size_t size() const { return maps_.size(); }
   const std::vector<GhostMap<D>>& maps() const { return maps_; }
+
+  // Where ghost g stands: S x_source + t.
+  Vec<D> position(const ParticleSet<D>& ps, std::size_t g) const {
+    return mul(maps_[g].scale, ps.x[maps_[g].source]) + maps_[g].shift;
+  }
+
+  // Re-orders the ghosts: new ghost k is old ghost order[k] (the cell grid sorts them by cell).
+  void reorder(const std::vector<std::uint32_t>& order) {
+    scratch_.resize(maps_.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      scratch_[k] = maps_[order[k]];
+    maps_.swap(scratch_);
+  }
 
   // Appends one ghost per map after the real particles and fills its state.
   void append_ghosts(ParticleSet<D>& ps) const {
     const std::size_t n = ps.n_real;
     ps.resize(n + maps_.size());
-    for (std::size_t g = 0; g < maps_.size(); ++g) {
+    const auto count = static_cast<long>(maps_.size());
+#pragma omp parallel for schedule(static)
+    for (long gg = 0; gg < count; ++gg) {
+      const auto g = static_cast<std::size_t>(gg);
       const auto& mp = maps_[g];
       const std::size_t i = n + g;
       const std::size_t s = mp.source;
@@ -44,6 +65,7 @@ class Halo {
       ps.rho[i] = ps.rho[s];
       ps.h[i] = ps.h[s];
       ps.p[i] = ps.p[s];
+      ps.c[i] = ps.c[s];
     }
   }
 
@@ -53,14 +75,23 @@ class Halo {
       f[ps.n_real + g] = mul(maps_[g].vscale, f[maps_[g].source]);
   }
 
-  // The CSPH corrections of a ghost: its neighbourhood is the mirror (or shifted) image of its
-  // source's, so gamma maps like a position difference (S gamma) and L like S L S.
-  void update_corrections(ParticleSet<D>& ps) const {
+  // The Shepard sum and gamma of BL (57) of a ghost: its neighbourhood is the mirror (or
+  // shifted) image of its source's, so S is the same and gamma maps like a position difference
+  // (S gamma).
+  void update_shepard(ParticleSet<D>& ps) const {
     for (std::size_t g = 0; g < maps_.size(); ++g) {
       const auto& mp = maps_[g];
       const std::size_t i = ps.n_real + g;
       ps.shepard[i] = ps.shepard[mp.source];
       ps.gamma[i] = mul(mp.scale, ps.gamma[mp.source]);
+    }
+  }
+
+  // The CSPH correction matrix of a ghost maps like S L S (same reason).
+  void update_corrections(ParticleSet<D>& ps) const {
+    for (std::size_t g = 0; g < maps_.size(); ++g) {
+      const auto& mp = maps_[g];
+      const std::size_t i = ps.n_real + g;
       for (int k = 0; k < D; ++k)
         for (int l = 0; l < D; ++l)
           ps.L[i](k, l) = mp.scale[k] * ps.L[mp.source](k, l) * mp.scale[l];
@@ -97,6 +128,7 @@ class Halo {
     return r;
   }
   std::vector<GhostMap<D>> maps_;
+  std::vector<GhostMap<D>> scratch_;  // reused by reorder
 };
 
 }  // namespace flume

@@ -87,7 +87,6 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   SimulationConfig<D> config;
   config.cfl = spec.cfl;
   config.fixed_dt = spec.dt;
-  config.resort_every = spec.resort_every;
   config.shepard_every = spec.shepard_every;
   return Simulation<D>(build_particles<D>(spec, phys), walls, std::move(scheme), phys, config);
 }

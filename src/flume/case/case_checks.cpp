@@ -199,8 +199,6 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
 
   s.output_interval = r.positive("output.interval");
   s.snapshot_interval = r.non_negative("output.snapshot_interval");
-  s.resort_every = static_cast<int>(r.integer("output.resort_every"));
-  if (s.resort_every < 0) r.fail("output.resort_every", "must be >= 0");
 
   s.surge_front = r.boolean("probes.surge_front");
   s.column_height = r.boolean("probes.column_height");

@@ -62,7 +62,6 @@ y_max = "free_slip"
 [output]
 interval = 0.01        # s between rows of diagnostics.csv and probes.csv
 snapshot_interval = 0.05  # s between ParaView snapshots; 0 = none
-resort_every = 25      # steps between re-sorting particles by cell (speed only)
 
 [probes]
 surge_front = false    # distance from domain.min along x to the leading particle on the floor

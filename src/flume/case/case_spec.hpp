@@ -70,8 +70,7 @@ struct CaseSpec {
   // [output]
   double output_interval = 0.01;    // s, diagnostics and probes
   double snapshot_interval = 0.05;  // s; 0 = no snapshots
-  int resort_every = 25;
-  int shepard_every = 0;  // steps between Shepard density filters, W (6.3); 0 = off
+  int shepard_every = 0;            // steps between Shepard density filters, W (6.3); 0 = off
 
   // [probes]
   bool surge_front = false;

@@ -1,6 +1,9 @@
 // One structure of arrays holding every per-particle field, each declared once here with its
 // unit. Owned ("real") particles come first, ghost copies (mirror walls, periodic images, later
 // MPI halos) are appended after them, so a loop over real particles is a prefix [0, n_real).
+// State fields define a particle and are carried between steps (and re-ordered when particles
+// are sorted); derived fields are recomputed by every step before they are read. Optional fields
+// are allocated only when the scheme uses them (Scheme::fields()).
 #pragma once
 
 #include <cstddef>
@@ -10,6 +13,16 @@
 #include "flume/core/vec.hpp"
 
 namespace flume {
+
+// The optional per-particle fields, as bits of ParticleSet::optional.
+enum OptionalField : unsigned {
+  kFieldGradV = 1u << 0,    // grad_v
+  kFieldStress = 1u << 1,   // stress
+  kFieldDrho = 1u << 2,     // drho
+  kFieldShepard = 1u << 3,  // shepard, gamma
+  kFieldL = 1u << 4,        // L
+  kFieldsAll = (1u << 5) - 1,
+};
 
 template <int D>
 struct ParticleSet {
@@ -23,49 +36,74 @@ struct ParticleSet {
   std::vector<double> m;         // mass, kg
   std::vector<double> rho;       // density, kg/m^3
   std::vector<double> h;         // smoothing length, m
+  std::vector<V> v_half;         // leap-frog staggered velocity v^{n+1/2} (v^0 at start), m/s
 
   // --- derived in each step's sweeps ---
   std::vector<double> p;     // pressure (compression positive), Pa
-  std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k / d x_l, 1/s
-  std::vector<M> stress;     // deviatoric (viscous) stress sigma' = 2 mu d', BL (23)-(24), Pa
+  std::vector<double> c;     // local sound speed sqrt(dp/drho), m/s
   std::vector<V> a;          // acceleration, m/s^2
-  std::vector<double> drho;  // density rate, kg/(m^3 s)
+  std::vector<double> drho;  // density rate, kg/(m^3 s)                              (optional)
+  std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k/d x_l, 1/s (opt.)
+  std::vector<M> stress;     // deviatoric stress sigma' = 2 mu d', BL (23)-(24), Pa    (optional)
 
   // --- kernel and gradient corrections (CSPH, BL 4.3) ---
-  std::vector<double> shepard;  // sum_b V_b W_b(x_a), the denominator of BL (53)-(54), -
-  std::vector<V> gamma;         // gamma(x_a) of BL (57), 1/m
-  std::vector<M> L;             // correction matrix L_a of BL (58), -
+  std::vector<double> shepard;  // sum_b V_b W_b(x_a), the denominator of BL (53)-(54), - (opt.)
+  std::vector<V> gamma;         // gamma(x_a) of BL (57), 1/m                              (opt.)
+  std::vector<M> L;             // correction matrix L_a of BL (58), -                     (opt.)
 
-  // --- integrator state carried between steps (leap-frog staggered values) ---
-  std::vector<V> v_half;  // staggered velocity v^{n+1/2} (after a step) / v^0 (at start), m/s
-
-  std::size_t n_real = 0;  // owned particles: indices [0, n_real); ghosts follow
+  std::size_t n_real = 0;          // owned particles: indices [0, n_real); ghosts follow
+  unsigned optional = kFieldsAll;  // the optional fields in use (the others stay empty)
 
   std::size_t size() const { return x.size(); }
+  bool uses(unsigned field) const { return (optional & field) != 0; }
 
-  // Applies f to every per-particle array, so that resizing and re-ordering can never forget
-  // a field. Add a new field above and here, nowhere else.
+  // Applies f to every state array: re-ordering must never forget one. Add a new field above
+  // and here, nowhere else.
   template <class F>
-  void for_each_field(F&& f) {
+  void for_each_state_field(F&& f) {
     f(id);
     f(x);
     f(v);
     f(m);
     f(rho);
     f(h);
-    f(p);
-    f(grad_v);
-    f(stress);
-    f(a);
-    f(drho);
-    f(shepard);
-    f(gamma);
-    f(L);
     f(v_half);
+  }
+  // Applies f to every derived array in use.
+  template <class F>
+  void for_each_derived_field(F&& f) {
+    f(p);
+    f(c);
+    f(a);
+    if (uses(kFieldDrho)) f(drho);
+    if (uses(kFieldGradV)) f(grad_v);
+    if (uses(kFieldStress)) f(stress);
+    if (uses(kFieldShepard)) {
+      f(shepard);
+      f(gamma);
+    }
+    if (uses(kFieldL)) f(L);
+  }
+  template <class F>
+  void for_each_field(F&& f) {
+    for_each_state_field(f);
+    for_each_derived_field(f);
   }
 
   void resize(std::size_t n) {
     for_each_field([n](auto& field) { field.resize(n); });
+  }
+
+  // Keeps only the optional fields in `fields` allocated (and frees the others).
+  void use_only(unsigned fields) {
+    const std::size_t n = size();
+    optional = kFieldsAll;
+    for_each_derived_field([](auto& field) {
+      field.clear();
+      field.shrink_to_fit();
+    });
+    optional = fields;
+    resize(n);
   }
 
   // Drops every ghost, keeping the real prefix.
@@ -84,16 +122,6 @@ struct ParticleSet {
     rho[i] = density;
     h[i] = smoothing;
     n_real = i + 1;
-  }
-
-  // Re-orders the real particles so that new index k holds old index order[k]
-  // (order is a permutation of [0, n_real)). Ghosts must have been dropped.
-  void permute(const std::vector<std::size_t>& order) {
-    for_each_field([&order](auto& field) {
-      auto copy = field;
-      for (std::size_t k = 0; k < order.size(); ++k)
-        field[k] = copy[order[k]];
-    });
   }
 };
 

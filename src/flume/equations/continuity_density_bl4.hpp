@@ -1,7 +1,9 @@
 // Continuity density, BL (2) with the divergence BL (4) (= W (3.21)):
-//   d rho_a/dt = -rho_a sum_b V_b (v_b - v_a) . grad W_b(x_a).
+//   d rho_a/dt = -rho_a sum_b V_b (v_b - v_a) . grad W_b(x_a),   V_b = m_b / rho_b.
 // Variationally consistent with the force BL (20). `vel` is the velocity field used: the
-// leap-frog evaluates the rate with v^{n+1/2} (leapfrog.hpp).
+// leap-frog evaluates the rate with v^{n+1/2} (leapfrog.hpp). For the pair (a, b) = (i, j),
+// (v_j - v_i) . grad_i W_ij is the same seen from either side (both factors change sign), so
+// a gets V_j times it and b gets V_i times it.
 #pragma once
 
 #include "flume/core/particle_set.hpp"
@@ -11,13 +13,15 @@ namespace flume {
 
 template <int D>
 struct ContinuityDensityBL4 {
-  using Acc = double;
+  using Acc = double;  // sum_b V_b (v_b - v_a) . grad W_b(x_a), the divergence of v at a
   ParticleSet<D>& ps;
   const std::vector<Vec<D>>& vel;
 
   Acc init(std::size_t) const { return 0.0; }
-  void pair(Acc& div, std::size_t i, const Pair<D>& g) const {
-    div += ps.m[g.j] / ps.rho[g.j] * dot(vel[g.j] - vel[i], g.gradw);
+  void pair(Acc& div_i, Acc& div_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const double dv_gradw = dot(vel[j] - vel[i], g.gradw);
+    div_i += ps.m[j] / ps.rho[j] * dv_gradw;
+    div_j += ps.m[i] / ps.rho[i] * dv_gradw;
   }
   void finish(Acc& div, std::size_t i) const { ps.drho[i] = -ps.rho[i] * div; }
 };

@@ -31,11 +31,17 @@ struct CsphGradientBL58 {
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& acc, std::size_t i, const Pair<D>& g) const {
-    const double vol = ps.m[g.j] / ps.rho[g.j];
-    const Vec<D> gw = corrected_kernel_gradient(ps, i, g);
-    acc.grad += outer(ps.v[g.j] - ps.v[i], gw) * vol;
-    acc.moment += outer(-g.xij, gw) * vol;
+  // a = i sees grad W_j(x_i) = gradw, b = j sees grad W_i(x_j) = -gradw; each corrects it with
+  // its own S and gamma.
+  void pair(Acc& acc_i, Acc& acc_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const Vec<D> dv = ps.v[j] - ps.v[i];
+    const Vec<D> gw_i = corrected_kernel_gradient(ps, i, g.gradw, g.w);
+    const Vec<D> gw_j = corrected_kernel_gradient(ps, j, -g.gradw, g.w);
+    const double vol_j = ps.m[j] / ps.rho[j], vol_i = ps.m[i] / ps.rho[i];
+    acc_i.grad += outer(dv, gw_i) * vol_j;
+    acc_i.moment += outer(-g.xij, gw_i) * vol_j;
+    acc_j.grad += outer(-dv, gw_j) * vol_i;
+    acc_j.moment += outer(g.xij, gw_j) * vol_i;
   }
   void finish(Acc& acc, std::size_t i) const {
     if (determinant(acc.moment) > kCsphMinDeterminant) {
@@ -58,9 +64,12 @@ struct CsphContinuity {
   const std::vector<Vec<D>>& vel;
 
   Acc init(std::size_t) const { return 0.0; }
-  void pair(Acc& div, std::size_t i, const Pair<D>& g) const {
-    const Vec<D> gw = ps.L[i] * corrected_kernel_gradient(ps, i, g);
-    div += ps.m[g.j] / ps.rho[g.j] * dot(vel[g.j] - vel[i], gw);
+  void pair(Acc& div_i, Acc& div_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const Vec<D> dv = vel[j] - vel[i];
+    const Vec<D> gw_i = ps.L[i] * corrected_kernel_gradient(ps, i, g.gradw, g.w);
+    const Vec<D> gw_j = ps.L[j] * corrected_kernel_gradient(ps, j, -g.gradw, g.w);
+    div_i += ps.m[j] / ps.rho[j] * dot(dv, gw_i);
+    div_j -= ps.m[i] / ps.rho[i] * dot(dv, gw_j);
   }
   void finish(Acc& div, std::size_t i) const { ps.drho[i] = -ps.rho[i] * div; }
 };

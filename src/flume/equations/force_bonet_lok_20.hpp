@@ -3,7 +3,8 @@
 // Compression positive (methods.md erratum 1): a_a = +T_a/m_a, i.e.
 //   a_a = -sum_b m_b/(rho_a rho_b) (p_a + p_b) grad_a W_ab.
 // Used with the summation density BL (1) it is the "+" form of BL (8): the inconsistent pair of
-// BL Fig 10. The pair force is antisymmetric and central.
+// BL Fig 10. The pair force is antisymmetric and central: a gets -m_b f, b gets +m_a f with
+// f = (p_a + p_b)/(rho_a rho_b) grad_a W_ab.
 #pragma once
 
 #include "flume/core/particle_set.hpp"
@@ -17,8 +18,10 @@ struct ForceBonetLok20 {
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    a -= g.gradw * (ps.m[g.j] / (ps.rho[i] * ps.rho[g.j]) * (ps.p[i] + ps.p[g.j]));
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const Vec<D> f = g.gradw * ((ps.p[i] + ps.p[j]) / (ps.rho[i] * ps.rho[j]));
+    a_i -= f * ps.m[j];
+    a_j += f * ps.m[i];
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

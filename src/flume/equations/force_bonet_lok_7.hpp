@@ -3,7 +3,8 @@
 // Compression positive (methods.md erratum 1): a_a = +T_a/m_a, and with
 // grad W_a(x_b) = -grad_{x_a} W(x_a - x_b) this is the familiar
 //   a_a = -sum_b m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab,
-// which pushes compressed particles apart. The pair force is antisymmetric and central.
+// which pushes compressed particles apart. The pair force is antisymmetric and central:
+// m_a a_a gets -f, m_b a_b gets +f with f = m_a m_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab.
 #pragma once
 
 #include "flume/core/particle_set.hpp"
@@ -17,9 +18,11 @@ struct ForceBonetLok7 {
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    const double ri = ps.rho[i], rj = ps.rho[g.j];
-    a -= g.gradw * (ps.m[g.j] * (ps.p[i] / (ri * ri) + ps.p[g.j] / (rj * rj)));
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const double ri = ps.rho[i], rj = ps.rho[j];
+    const Vec<D> f = g.gradw * (ps.p[i] / (ri * ri) + ps.p[j] / (rj * rj));
+    a_i -= f * ps.m[j];
+    a_j += f * ps.m[i];
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

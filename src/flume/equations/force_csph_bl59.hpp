@@ -10,6 +10,7 @@
 
 #include "flume/core/particle_set.hpp"
 #include "flume/equations/pair.hpp"
+#include "flume/equations/shepard_gamma_bl57.hpp"
 #include "flume/equations/viscosity_bonet_lok_24.hpp"
 
 namespace flume {
@@ -21,12 +22,20 @@ struct ForceCsphBL59 {
   double mu;  // dynamic viscosity, Pa s; when > 0, ps.stress holds sigma' (BL (23)-(24))
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    const std::size_t j = g.j;
-    Mat<D> stress = Mat<D>::identity() * ps.p[j];
-    if (mu > 0.0) stress -= ps.stress[j];
-    const Vec<D> gw = (-g.gradw - ps.gamma[j] * g.w) * (1.0 / ps.shepard[j]);
-    a += (stress * (ps.L[j] * gw)) * (ps.m[j] / (ps.rho[j] * ps.rho[i]));
+  // Particle a = i gets b = j's term with grad W~_i(x_j) (j's S, gamma, L) and vice versa; the
+  // two terms are not opposite, but their sum over all pairs is zero (see above).
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const double inv_rr = 1.0 / (ps.rho[i] * ps.rho[j]);
+    a_i += (total_stress(j) * (ps.L[j] * corrected_kernel_gradient(ps, j, -g.gradw, g.w))) *
+           (ps.m[j] * inv_rr);
+    a_j += (total_stress(i) * (ps.L[i] * corrected_kernel_gradient(ps, i, g.gradw, g.w))) *
+           (ps.m[i] * inv_rr);
+  }
+  // p_b I - sigma'_b (compression positive).
+  Mat<D> total_stress(std::size_t b) const {
+    Mat<D> s = Mat<D>::identity() * ps.p[b];
+    if (mu > 0.0) s -= ps.stress[b];
+    return s;
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

@@ -1,5 +1,6 @@
 // The geometry of one interacting pair (i, j), computed once by the sweep driver and handed to
-// every equation of a group: no equation recomputes r, W or grad W.
+// every equation of a group: no equation recomputes r, W or grad W. The driver hands each pair
+// over once, and the equation gives both particles their share (docs/adding_an_equation.md).
 #pragma once
 
 #include <cstddef>
@@ -10,12 +11,11 @@ namespace flume {
 
 template <int D>
 struct Pair {
-  std::size_t j = 0;  // neighbour index (may be a ghost)
-  Vec<D> xij;         // x_i - x_j, m
-  double r = 0.0;     // |x_i - x_j|, m
-  double h = 0.0;     // pair smoothing length (h_i + h_j)/2 (W, text after (3.46)), m
-  double w = 0.0;     // W(r, h), 1/m^D
-  Vec<D> gradw;       // grad_{x_i} W(x_i - x_j, h) = BL's grad W_j(x_i) = -grad W_i(x_j), 1/m^(D+1)
+  Vec<D> xij;      // x_i - x_j, m
+  double r = 0.0;  // |x_i - x_j|, m
+  double h = 0.0;  // pair smoothing length (h_i + h_j)/2 (W, text after (3.46)), m
+  double w = 0.0;  // W(r, h), 1/m^D
+  Vec<D> gradw;    // grad_{x_i} W(x_i - x_j, h) = BL's grad W_j(x_i) = -grad W_i(x_j), 1/m^(D+1)
 };
 
 }  // namespace flume

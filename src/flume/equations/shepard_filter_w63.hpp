@@ -3,6 +3,7 @@
 // A zeroth-order-consistent average of the density over the kernel: it removes the particle-scale
 // density noise that a continuity density accumulates (W applies it every 40 steps, W 6.2).
 // The result goes to `out`, not ps.rho, so that every particle averages the old densities.
+// W is symmetric: each particle of a pair gets the other's terms.
 #pragma once
 
 #include <array>
@@ -20,9 +21,11 @@ struct ShepardFilterW63 {
   std::vector<double>& out;
 
   Acc init(std::size_t) const { return {0.0, 0.0}; }
-  void pair(Acc& s, std::size_t, const Pair<D>& g) const {
-    s[0] += ps.m[g.j] * g.w;
-    s[1] += ps.m[g.j] / ps.rho[g.j] * g.w;
+  void pair(Acc& s_i, Acc& s_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    s_i[0] += ps.m[j] * g.w;
+    s_i[1] += ps.m[j] / ps.rho[j] * g.w;
+    s_j[0] += ps.m[i] * g.w;
+    s_j[1] += ps.m[i] / ps.rho[i] * g.w;
   }
   void finish(Acc& s, std::size_t i) const { out[i] = s[0] / s[1]; }
 };

@@ -19,10 +19,13 @@ struct ShepardGammaBL57 {
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& acc, std::size_t, const Pair<D>& g) const {
-    const double vol = ps.m[g.j] / ps.rho[g.j];
-    acc.s += vol * g.w;
-    acc.grad += g.gradw * vol;
+  // Seen from b, W is the same and grad W changes sign.
+  void pair(Acc& acc_i, Acc& acc_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const double vol_j = ps.m[j] / ps.rho[j], vol_i = ps.m[i] / ps.rho[i];
+    acc_i.s += vol_j * g.w;
+    acc_i.grad += g.gradw * vol_j;
+    acc_j.s += vol_i * g.w;
+    acc_j.grad -= g.gradw * vol_i;
   }
   void finish(Acc& acc, std::size_t i) const {
     ps.shepard[i] = acc.s;  // > 0: the self term V_a W(0) is always there
@@ -30,10 +33,12 @@ struct ShepardGammaBL57 {
   }
 };
 
-// grad W~_b(x_a) of BL (57) corrected, for the pair (a = i, b = j), from a's S and gamma.
+// grad W~_b(x_a) of BL (57) corrected, at particle a with its S_a and gamma_a, from the
+// uncorrected grad W_b(x_a) = gradw and W_b(x_a) = w.
 template <int D>
-Vec<D> corrected_kernel_gradient(const ParticleSet<D>& ps, std::size_t i, const Pair<D>& g) {
-  return (g.gradw - ps.gamma[i] * g.w) * (1.0 / ps.shepard[i]);
+Vec<D> corrected_kernel_gradient(const ParticleSet<D>& ps, std::size_t a, const Vec<D>& gradw,
+                                 double w) {
+  return (gradw - ps.gamma[a] * w) * (1.0 / ps.shepard[a]);
 }
 
 }  // namespace flume

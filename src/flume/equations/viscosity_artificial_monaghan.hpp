@@ -4,11 +4,12 @@
 // with bars for pair averages. Pi_ij has units of pressure (it is rho_bar times Monaghan's usual
 // Pi), so it enters the momentum equation as Pi_ij / rho_bar^2 (errata.md, W (3.18)-(3.19)):
 //   a_i -= sum_j m_j Pi_ij / rho_ij^2 grad_i W_ij.
-// eta^2 = 0.01 h_ij^2, the usual choice (W does not give eta).
+// eta^2 = 0.01 h_ij^2, the usual choice (W does not give eta). Pi_ij is symmetric, so the pair
+// force is antisymmetric: i gets -m_j f, j gets +m_i f. The local sound speeds c are those of
+// the equation of state, computed once per particle with the pressure (ps.c).
 #pragma once
 
 #include "flume/core/particle_set.hpp"
-#include "flume/equations/eos_tait.hpp"
 #include "flume/equations/pair.hpp"
 
 namespace flume {
@@ -17,27 +18,20 @@ template <int D>
 struct ViscosityArtificialMonaghan {
   using Acc = Vec<D>;
   ParticleSet<D>& ps;
-  const TaitEos& eos;
   double alpha;
   double beta;
 
   Acc init(std::size_t) const { return {}; }
-  // The cheap test stays inline; the rest is out of line, so a run without artificial viscosity
-  // pays one predictable branch per pair.
-  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    if (alpha != 0.0 || beta != 0.0) add_pair(a, i, g);
-  }
-  [[gnu::noinline]] void add_pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    const double ux = dot(ps.v[i] - ps.v[g.j], g.xij);
-    if (ux >= 0.0) return;
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const double ux = dot(ps.v[i] - ps.v[j], g.xij);
+    if (ux >= 0.0) return;  // receding pairs feel nothing
     const double mu_ij = g.h * ux / (g.r * g.r + 0.01 * g.h * g.h);
-    const double rho_bar = 0.5 * (ps.rho[i] + ps.rho[g.j]);
-    // From the pressures the sweep already has (ghosts' refreshed too): two square roots per
-    // pair instead of two pows.
-    const double c_bar =
-        0.5 * (eos.sound_speed(ps.rho[i], ps.p[i]) + eos.sound_speed(ps.rho[g.j], ps.p[g.j]));
+    const double rho_bar = 0.5 * (ps.rho[i] + ps.rho[j]);
+    const double c_bar = 0.5 * (ps.c[i] + ps.c[j]);
     const double pi_ij = rho_bar * mu_ij * (-alpha * c_bar + beta * mu_ij);
-    a -= g.gradw * (ps.m[g.j] * pi_ij / (rho_bar * rho_bar));
+    const Vec<D> f = g.gradw * (pi_ij / (rho_bar * rho_bar));
+    a_i -= f * ps.m[j];
+    a_j += f * ps.m[i];
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

@@ -5,7 +5,9 @@
 // deviatoric stress enters with the opposite sign to p:
 //   a_a += sum_b m_b/(rho_a rho_b) (sigma'_a + sigma'_b) grad_a W_ab.
 // The deviator is BL (23)'s d' = d - (1/3) tr(d) I also in 2D: plane strain (d_zz = 0) of a
-// physical 3D fluid, so the 2D and 3D instantiations describe the same fluid.
+// physical 3D fluid, so the 2D and 3D instantiations describe the same fluid. The pair force is
+// antisymmetric: a gets +m_b f, b gets -m_a f with f = (sigma'_a + sigma'_b) grad_a W_ab /
+// (rho_a rho_b).
 #pragma once
 
 #include "flume/core/particle_set.hpp"
@@ -39,8 +41,10 @@ struct ViscosityBonetLok24 {
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a, std::size_t i, const Pair<D>& g) const {
-    a += ((ps.stress[i] + ps.stress[g.j]) * g.gradw) * (ps.m[g.j] / (ps.rho[i] * ps.rho[g.j]));
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const Vec<D> f = ((ps.stress[i] + ps.stress[j]) * g.gradw) * (1.0 / (ps.rho[i] * ps.rho[j]));
+    a_i += f * ps.m[j];
+    a_j -= f * ps.m[i];
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

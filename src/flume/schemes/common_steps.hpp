@@ -11,27 +11,30 @@
 #include "flume/equations/velocity_gradient_bl22.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
 #include "flume/equations/viscosity_bonet_lok_24.hpp"
-#include "flume/neighbors/neighbor_list.hpp"
 #include "flume/schemes/physics.hpp"
 #include "flume/schemes/sweep.hpp"
 
 namespace flume {
 
-// p_a = p(rho_a) for the real particles, then copied to the ghosts.
+// p_a = p(rho_a) and the local sound speed c_a for the real particles, then copied to the ghosts.
 template <int D>
 void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& halo) {
-  for_each_real(ps.n_real, [&](std::size_t i) { ps.p[i] = phys.eos.pressure(ps.rho[i]); });
+  for_each_real(ps.n_real, [&](std::size_t i) {
+    ps.p[i] = phys.eos.pressure(ps.rho[i]);
+    ps.c[i] = phys.eos.sound_speed(ps.rho[i], ps.p[i]);
+  });
   halo.update_scalar(ps, ps.p);
+  halo.update_scalar(ps, ps.c);
 }
 
 // Sweep: rho_a <- Shepard average of the densities, W (6.3), then copied to the ghosts. The
 // mirror ghosts take part (W does not say, errata.md): a particle at a wall then averages over a
 // full kernel, as in the interior.
 template <int D, class Kernel>
-void shepard_filter(const NeighborList& nl, ParticleSet<D>& ps, const Halo<D>& halo) {
-  std::vector<double> filtered(ps.n_real);
+void shepard_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo) {
+  auto& filtered = ctx.work.template buffer<double>(1, ps.n_real);
   ShepardFilterW63<D> filter{ps, filtered};
-  sweep<D, Kernel>(nl, ps, filter);
+  sweep<D, Kernel>(ctx, ps, "shepard_filter", filter);
   std::copy(filtered.begin(), filtered.end(), ps.rho.begin());
   halo.update_scalar(ps, ps.rho);
 }
@@ -44,27 +47,32 @@ void start_accelerations(ParticleSet<D>& ps, const Physics<D>& phys) {
 
 // Sweep: grad v_a, BL (22); then sigma'_a = 2 mu d'_a for real and ghost particles, BL (23)-(24).
 template <int D, class Kernel>
-void update_viscous_stress(const NeighborList& nl, ParticleSet<D>& ps, const Halo<D>& halo,
+void update_viscous_stress(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo,
                            double mu) {
   VelocityGradientBL22<D> gradient{ps};
-  sweep<D, Kernel>(nl, ps, gradient);
+  sweep<D, Kernel>(ctx, ps, "velocity_gradient", gradient);
   halo.update_velocity_gradient(ps);
   update_deviatoric_stress(ps, mu);
 }
 
-// Sweep: a_a = g + pressure force + physical viscosity BL (24) (when mu > 0, from ps.stress) +
-// artificial viscosity W (3.18) (when alpha or beta > 0).
-template <int D, class Kernel, template <int> class Force>
-void accelerate(const NeighborList& nl, ParticleSet<D>& ps, const Physics<D>& phys) {
+// Sweep: a_a = g + the equations given (a pressure force, ...) + physical viscosity BL (24)
+// (when mu > 0, from ps.stress) + artificial viscosity W (3.18) (when alpha or beta > 0). The
+// terms that are off are left out of the sweep, not evaluated as zeros.
+template <int D, class Kernel, class... Forces>
+void accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<D>& phys,
+                Forces&... forces) {
   start_accelerations(ps, phys);
-  Force<D> pressure{ps};
-  ViscosityArtificialMonaghan<D> artificial{ps, phys.eos, phys.av_alpha, phys.av_beta};
-  if (phys.mu > 0.0) {
-    ViscosityBonetLok24<D> viscous{ps};
-    sweep<D, Kernel>(nl, ps, pressure, viscous, artificial);
-  } else {
-    sweep<D, Kernel>(nl, ps, pressure, artificial);
-  }
+  ViscosityBonetLok24<D> viscous{ps};
+  ViscosityArtificialMonaghan<D> artificial{ps, phys.av_alpha, phys.av_beta};
+  const bool av = phys.av_alpha != 0.0 || phys.av_beta != 0.0;
+  if (phys.mu > 0.0 && av)
+    sweep<D, Kernel>(ctx, ps, "force", forces..., viscous, artificial);
+  else if (phys.mu > 0.0)
+    sweep<D, Kernel>(ctx, ps, "force", forces..., viscous);
+  else if (av)
+    sweep<D, Kernel>(ctx, ps, "force", forces..., artificial);
+  else
+    sweep<D, Kernel>(ctx, ps, "force", forces...);
 }
 
 }  // namespace flume

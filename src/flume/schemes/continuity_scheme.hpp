@@ -19,18 +19,23 @@ class ContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
  public:
   explicit ContinuityScheme(Physics<D> phys) : phys_(std::move(phys)) {}
 
-  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
-                             const Halo<D>& halo) const override {
-    update_pressure(ps, phys_, halo);
-    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(nl, ps, halo, phys_.mu);
-    accelerate<D, Kernel, ForceBonetLok20>(nl, ps, phys_);
+  unsigned fields() const override {
+    return kFieldDrho | (phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u);
   }
 
-  void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
+  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
+                             const Halo<D>& halo) const override {
+    update_pressure(ps, phys_, halo);
+    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
+    ForceBonetLok20<D> pressure{ps};
+    accelerate<D, Kernel>(ctx, ps, phys_, pressure);
+  }
+
+  void compute_density_rate(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                             const Halo<D>& halo) const override {
     halo.update_velocity(ps, ps.v_half);
     ContinuityDensityBL4<D> continuity{ps, ps.v_half};
-    sweep<D, Kernel>(nl, ps, continuity);
+    sweep<D, Kernel>(ctx, ps, "continuity", continuity);
   }
 
  private:

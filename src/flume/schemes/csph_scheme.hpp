@@ -24,28 +24,34 @@ class CsphScheme final : public EvolvedDensityScheme<D, Kernel> {
  public:
   explicit CsphScheme(Physics<D> phys) : phys_(std::move(phys)) {}
 
-  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+  unsigned fields() const override {
+    return kFieldDrho | kFieldGradV | kFieldShepard | kFieldL |
+           (phys_.mu > 0.0 ? kFieldStress : 0u);
+  }
+
+  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                              const Halo<D>& halo) const override {
     ShepardGammaBL57<D> shepard{ps};
-    sweep<D, Kernel>(nl, ps, shepard);
+    sweep<D, Kernel>(ctx, ps, "shepard_gamma", shepard);
+    halo.update_shepard(ps);
     CsphGradientBL58<D> correction{ps};
-    sweep<D, Kernel>(nl, ps, correction);
+    sweep<D, Kernel>(ctx, ps, "correction", correction);
     halo.update_corrections(ps);
     halo.update_velocity_gradient(ps);
     if (phys_.mu > 0.0) update_deviatoric_stress(ps, phys_.mu);
     update_pressure(ps, phys_, halo);
 
-    start_accelerations(ps, phys_);
     ForceCsphBL59<D> internal{ps, phys_.mu};
-    ViscosityArtificialMonaghan<D> artificial{ps, phys_.eos, phys_.av_alpha, phys_.av_beta};
-    sweep<D, Kernel>(nl, ps, internal, artificial);
+    Physics<D> inviscid = phys_;  // the viscous stress is part of BL (59)'s sigma
+    inviscid.mu = 0.0;
+    accelerate<D, Kernel>(ctx, ps, inviscid, internal);
   }
 
-  void compute_density_rate(ParticleSet<D>& ps, const NeighborList& nl,
+  void compute_density_rate(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                             const Halo<D>& halo) const override {
     halo.update_velocity(ps, ps.v_half);
     CsphContinuity<D> continuity{ps, ps.v_half};
-    sweep<D, Kernel>(nl, ps, continuity);
+    sweep<D, Kernel>(ctx, ps, "continuity", continuity);
   }
 
  private:

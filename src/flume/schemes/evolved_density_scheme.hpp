@@ -12,8 +12,9 @@ class EvolvedDensityScheme : public Scheme<D> {
  public:
   double support() const final { return Kernel::support; }
   bool evolves_density() const final { return true; }
-  void filter_density(ParticleSet<D>& ps, const NeighborList& nl, const Halo<D>& halo) const final {
-    shepard_filter<D, Kernel>(nl, ps, halo);
+  void filter_density(ParticleSet<D>& ps, const SweepContext<D>& ctx,
+                      const Halo<D>& halo) const final {
+    shepard_filter<D, Kernel>(ctx, ps, halo);
   }
 };
 

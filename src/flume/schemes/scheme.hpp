@@ -8,8 +8,8 @@
 
 #include "flume/boundaries/halo.hpp"
 #include "flume/core/particle_set.hpp"
-#include "flume/neighbors/neighbor_list.hpp"
 #include "flume/schemes/physics.hpp"
+#include "flume/schemes/sweep.hpp"
 
 namespace flume {
 
@@ -21,19 +21,21 @@ class Scheme {
   virtual double support() const = 0;
   // True when rho is integrated in time (continuity); false when it is recomputed (summation).
   virtual bool evolves_density() const = 0;
+  // The optional particle fields (OptionalField bits) the scheme reads or writes.
+  virtual unsigned fields() const = 0;
   // Fills ps.a of the real particles (and ps.rho, for a summation density). The ghosts are
-  // appended to ps and nl holds the neighbours of the real particles; halo refreshes the ghosts
+  // appended to ps, sorted into ctx.grid with the real particles; halo refreshes the ghosts
   // between groups.
-  virtual void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+  virtual void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                                      const Halo<D>& halo) const = 0;
   // For schemes that evolve density: fills ps.drho from the positions x^n and the velocities
   // v^{n+1/2} after the leap-frog kick (leapfrog.hpp says why). Ghost v_half is refreshed here.
-  virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const NeighborList& /*nl*/,
+  virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
                                     const Halo<D>& /*halo*/) const {}
   // For schemes that evolve density: the Shepard density filter W (6.3) over the real
   // particles, ghosts appended and refreshed. (A summation density is recomputed every step,
   // so the case reader does not allow the filter with it.)
-  virtual void filter_density(ParticleSet<D>& /*ps*/, const NeighborList& /*nl*/,
+  virtual void filter_density(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
                               const Halo<D>& /*halo*/) const {}
 };
 

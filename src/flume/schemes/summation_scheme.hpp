@@ -21,16 +21,18 @@ class SummationScheme final : public Scheme<D> {
   explicit SummationScheme(Physics<D> phys) : phys_(std::move(phys)) {}
   double support() const override { return Kernel::support; }
   bool evolves_density() const override { return false; }
+  unsigned fields() const override { return phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u; }
 
-  void compute_accelerations(ParticleSet<D>& ps, const NeighborList& nl,
+  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                              const Halo<D>& halo) const override {
     DensitySummation<D> density{ps};
-    sweep<D, Kernel>(nl, ps, density);
+    sweep<D, Kernel>(ctx, ps, "density", density);
     halo.update_scalar(ps, ps.rho);
     update_pressure(ps, phys_, halo);
 
-    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(nl, ps, halo, phys_.mu);
-    accelerate<D, Kernel, Force>(nl, ps, phys_);
+    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
+    Force<D> pressure{ps};
+    accelerate<D, Kernel>(ctx, ps, phys_, pressure);
   }
 
  private:

@@ -12,6 +12,19 @@
 namespace flume {
 
 template <int D>
+void sort_state(ParticleSet<D>& ps, const std::vector<std::uint32_t>& order, SweepWorkspace& work) {
+  const auto n = static_cast<long>(order.size());
+  ps.for_each_state_field([&](auto& field) {
+    using T = typename std::decay_t<decltype(field)>::value_type;
+    auto& out = work.buffer<T>(0, order.size());
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < n; ++k)
+      out[static_cast<std::size_t>(k)] = field[order[static_cast<std::size_t>(k)]];
+    field.swap(out);
+  });
+}
+
+template <int D>
 Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
                           std::unique_ptr<Scheme<D>> scheme, Physics<D> physics,
                           SimulationConfig<D> config)
@@ -20,37 +33,48 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       scheme_(std::move(scheme)),
       phys_(std::move(physics)),
       config_(config) {
+  ps_.drop_ghosts();
+  ps_.use_only(scheme_->fields());
   check_state();
 }
 
 template <int D>
-void Simulation<D>::step(double max_dt) {
-  double h_max = 0.0;
-  for (std::size_t i = 0; i < ps_.n_real; ++i)
-    h_max = std::max(h_max, ps_.h[i]);
-  const double range = scheme_->support() * h_max;
-
-  // Re-sort real particles by cell now and then, so neighbours sit close in memory. The order
-  // depends only on positions, so results stay independent of the thread count.
-  std::optional<PhaseClock::Scope> phase;
-  phase.emplace(&clock_, "neighbours");
-  if (config_.resort_every > 0 && steps_ % config_.resort_every == 0) {
-    cells_.build(std::span<const Vec<D>>(ps_.x.data(), ps_.n_real), range);
-    ps_.permute(cells_.cell_order(ps_.n_real));
+void Simulation<D>::prepare_neighbours(double range) {
+  {
+    PhaseClock::Scope phase(&clock_, "neighbours");
+    // Sorted by cell every step: each cell, and each row of three cells, is then a contiguous
+    // run of indices. The order depends only on the positions (a stable counting sort), so the
+    // results do not depend on the thread count.
+    sort_state(ps_, grid_.sort_real(std::span<const Vec<D>>(ps_.x.data(), ps_.n_real), range),
+               work_);
   }
-
-  phase.emplace(&clock_, "boundaries");
+  PhaseClock::Scope phase(&clock_, "boundaries");
   walls_.build_halo(ps_, range, halo_);
+  ghost_x_.resize(halo_.size());
+  for (std::size_t g = 0; g < halo_.size(); ++g)
+    ghost_x_[g] = halo_.position(ps_, g);
+  halo_.reorder(grid_.sort_ghosts(ghost_x_));
   halo_.append_ghosts(ps_);
-  phase.emplace(&clock_, "neighbours");
-  cells_.build(ps_.x, range);
-  cells_.find_neighbors(ps_.x, ps_.n_real, neighbors_);
-  phase.emplace(&clock_, "sweeps");
+}
+
+template <int D>
+void Simulation<D>::step(double max_dt) {
+  double h_max = 0.0, h_min = ps_.n_real ? ps_.h[0] : 0.0;
+  for (std::size_t i = 0; i < ps_.n_real; ++i) {
+    h_max = std::max(h_max, ps_.h[i]);
+    h_min = std::min(h_min, ps_.h[i]);
+  }
+  const double range = scheme_->support() * h_max;
+  prepare_neighbours(range);
+  const SweepContext<D> ctx{grid_, work_, h_min == h_max ? h_max : 0.0, &clock_};
+
   if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
-    scheme_->filter_density(ps_, neighbors_, halo_);
+    scheme_->filter_density(ps_, ctx, halo_);
 
-  scheme_->compute_accelerations(ps_, neighbors_, halo_);
+  scheme_->compute_accelerations(ps_, ctx, halo_);
 
+  std::optional<PhaseClock::Scope> phase;
+  phase.emplace(&clock_, "integration");
   const double dt_rule =
       config_.fixed_dt > 0.0 ? config_.fixed_dt : cfl_time_step(ps_, phys_, config_.cfl);
   if (steps_ == 0) first_dt_ = dt_rule;
@@ -62,11 +86,10 @@ void Simulation<D>::step(double max_dt) {
                     "t = {:.6g} s, step {}: the simulation blew up",
                     dt_rule, first_dt_, time_, steps_));
   const double dt = std::min(dt_rule, max_dt);
-  phase.emplace(&clock_, "integration");
   integrator_.kick(ps_, dt);
   if (scheme_->evolves_density()) {
-    phase.emplace(&clock_, "sweeps");
-    scheme_->compute_density_rate(ps_, neighbors_, halo_);
+    phase.reset();
+    scheme_->compute_density_rate(ps_, ctx, halo_);
     phase.emplace(&clock_, "integration");
     integrator_.advance_density(ps_, dt);
   }
@@ -74,16 +97,38 @@ void Simulation<D>::step(double max_dt) {
   phase.emplace(&clock_, "boundaries");
   ps_.drop_ghosts();
   walls_.reflect_crossings(ps_, range);
-  phase.emplace(&clock_, "checks");
   time_ += dt;
   last_dt_ = dt;
   ++steps_;
+  phase.emplace(&clock_, "checks");
   check_state();
 }
 
 template <int D>
+std::size_t Simulation<D>::bytes() const {
+  std::size_t b = 0;
+  auto& ps = const_cast<ParticleSet<D>&>(ps_);
+  ps.for_each_field([&b](const auto& field) {
+    b += field.capacity() * sizeof(typename std::decay_t<decltype(field)>::value_type);
+  });
+  return b + grid_.bytes() + work_.bytes() + halo_.size() * sizeof(GhostMap<D>);
+}
+
+template <int D>
 void Simulation<D>::check_state() const {
-  for (std::size_t i = 0; i < ps_.n_real; ++i) {
+  // The first bad particle (lowest index), found in parallel; reported with its id.
+  const auto n = static_cast<long>(ps_.n_real);
+  long bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (long ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    bool ok = std::isfinite(ps_.rho[i]) && ps_.rho[i] > 0.0;
+    for (int k = 0; k < D; ++k)
+      ok = ok && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
+    if (!ok) bad = std::min(bad, ii);
+  }
+  if (bad < n) {
+    const auto i = static_cast<std::size_t>(bad);
     bool finite = std::isfinite(ps_.rho[i]);
     for (int k = 0; k < D; ++k)
       finite = finite && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
@@ -91,11 +136,10 @@ void Simulation<D>::check_state() const {
       throw SimulationError(
           fmt::format("non-finite state (NaN or infinity) of particle {} at t = {:.6g} s, step {}",
                       ps_.id[i], time_, steps_));
-    if (!(ps_.rho[i] > 0.0))
-      throw SimulationError(
-          fmt::format("density of particle {} fell to {:.4g} kg/m^3 at t = "
-                      "{:.6g} s, step {}: the simulation blew up",
-                      ps_.id[i], ps_.rho[i], time_, steps_));
+    throw SimulationError(
+        fmt::format("density of particle {} fell to {:.4g} kg/m^3 at t = "
+                    "{:.6g} s, step {}: the simulation blew up",
+                    ps_.id[i], ps_.rho[i], time_, steps_));
   }
   const long out = walls_.first_outside(ps_);
   if (out >= 0) {
@@ -110,6 +154,8 @@ void Simulation<D>::check_state() const {
   }
 }
 
+template void sort_state<2>(ParticleSet<2>&, const std::vector<std::uint32_t>&, SweepWorkspace&);
+template void sort_state<3>(ParticleSet<3>&, const std::vector<std::uint32_t>&, SweepWorkspace&);
 template class Simulation<2>;
 template class Simulation<3>;
 

@@ -1,14 +1,15 @@
 // One running simulation: particles, scheme, walls, integrator and neighbour search, advanced
 // step by step. No I/O here: the runner decides what to write and when.
-// Each step: (re-sort) -> ghosts -> neighbours -> scheme's groups -> leap-frog -> checks.
+// Each step: sort by cell -> ghosts -> scheme's groups -> leap-frog -> walls -> checks.
 #pragma once
 
 #include <memory>
 
 #include "flume/boundaries/box_walls.hpp"
 #include "flume/integrators/leapfrog.hpp"
-#include "flume/neighbors/cell_list.hpp"
+#include "flume/neighbors/cell_grid.hpp"
 #include "flume/schemes/scheme.hpp"
+#include "flume/schemes/sweep_workspace.hpp"
 #include "flume/sim/phase_clock.hpp"
 
 namespace flume {
@@ -17,7 +18,6 @@ template <int D>
 struct SimulationConfig {
   double cfl = 0.3;       // Courant number of BL (63)
   double fixed_dt = 0.0;  // s; 0 means the CFL rule
-  int resort_every = 25;  // steps between re-sorting real particles by cell (memory locality)
   int shepard_every = 0;  // steps between Shepard density filters W (6.3); 0 = never
 };
 
@@ -40,8 +40,12 @@ class Simulation {
   // Seconds spent in each phase of the steps taken so far (flume bench).
   PhaseClock& phase_clock() { return clock_; }
   const PhaseClock& phase_clock() const { return clock_; }
+  // Heap bytes held by the simulation's particle fields, grid and scratch (flume bench).
+  std::size_t bytes() const;
 
  private:
+  // Sorts the real particles by cell and builds the ghosts, binned into the same grid.
+  void prepare_neighbours(double range);
   void check_state() const;
 
   ParticleSet<D> ps_;
@@ -51,14 +55,21 @@ class Simulation {
   SimulationConfig<D> config_;
   LeapFrog<D> integrator_;
   Halo<D> halo_;
-  CellList<D> cells_;
-  NeighborList neighbors_;
+  CellGrid<D> grid_;
+  SweepWorkspace work_;
+  std::vector<Vec<D>> ghost_x_;  // ghost positions before sorting (reused)
   double time_ = 0.0;
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;  // the step rule's first value, s
   long steps_ = 0;
   PhaseClock clock_;
 };
+
+// Re-orders the state fields of the real particles (ghosts dropped): new index k holds old index
+// order[k]. Gathers into scratch buffers of `work` and swaps them in, so nothing is allocated once
+// the buffers exist. Derived fields are not moved: every step recomputes them before use.
+template <int D>
+void sort_state(ParticleSet<D>& ps, const std::vector<std::uint32_t>& order, SweepWorkspace& work);
 
 extern template class Simulation<2>;
 extern template class Simulation<3>;

@@ -1,0 +1,134 @@
+#include "flume/neighbors/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "flume/core/error.hpp"
+
+namespace flume {
+
+namespace {
+// A grid larger than this means particles are spread absurdly far apart (a particle escaped):
+// refuse rather than allocate gigabytes.
+constexpr std::size_t kMaxCells = std::size_t{1} << 26;
+// Cells are this much wider than the range, so that rounding in (x - origin) / edge can never put
+// two points closer than the range into cells two apart (the rounding error of the scaled
+// coordinate is a few ulps of at most 2^26, far below 1e-6).
+constexpr double kEdgeMargin = 1.0 + 1e-6;
+}  // namespace
+
+template <int D>
+std::size_t CellGrid<D>::cell_of(const Vec<D>& p) const {
+  std::size_t idx = 0;
+  for (int k = D - 1; k >= 0; --k) {
+    const double s = (p[k] - origin_[k]) / edge_;
+    // Clamped (ghosts far outside): the border cells are never within reach of a real particle.
+    const double cs = std::clamp(s, 0.0, static_cast<double>(dims_[k] - 1));
+    idx = idx * dims_[k] + static_cast<std::size_t>(cs);
+  }
+  return idx;
+}
+
+template <int D>
+void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
+                                std::vector<std::uint32_t>& start,
+                                std::vector<std::uint32_t>& order) {
+  const std::size_t n = cell.size();
+  start.assign(cell_count_ + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    ++start[cell[i] + 1];
+  for (std::size_t c = 0; c < cell_count_; ++c)
+    start[c + 1] += start[c];
+  order.resize(n);
+  // start[c] is advanced past each particle placed, then shifted back: one array, stable.
+  for (std::size_t i = 0; i < n; ++i)
+    order[start[cell[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t c = cell_count_; c > 0; --c)
+    start[c] = start[c - 1] + offset;
+  start[0] = offset;
+}
+
+template <int D>
+const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>> x, double range) {
+  if (!(range > 0.0)) throw SimulationError("cell grid: range must be positive");
+  if (x.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
+    throw SimulationError("cell grid: too many particles for 32-bit indices");
+  range_ = range;
+  edge_ = range * kEdgeMargin;
+  n_real_ = x.size();
+  Vec<D> lo, hi;
+  for (int k = 0; k < D; ++k) {
+    lo[k] = std::numeric_limits<double>::max();
+    hi[k] = std::numeric_limits<double>::lowest();
+  }
+  const auto n = static_cast<long>(x.size());
+  for (int k = 0; k < D; ++k) {
+    double l = lo[k], h = hi[k];
+    bool finite = true;
+#pragma omp parallel for schedule(static) reduction(min : l) reduction(max : h) \
+    reduction(&& : finite)
+    for (long i = 0; i < n; ++i) {
+      const double v = x[static_cast<std::size_t>(i)][k];
+      finite = finite && std::isfinite(v);
+      l = std::min(l, v);
+      h = std::max(h, v);
+    }
+    if (!finite) throw SimulationError("cell grid: non-finite particle position");
+    lo[k] = x.empty() ? 0.0 : l;
+    hi[k] = x.empty() ? 0.0 : h;
+  }
+  cell_count_ = 1;
+  for (int k = 0; k < D; ++k) {
+    const double extent = (hi[k] - lo[k]) / edge_;
+    if (extent > static_cast<double>(kMaxCells))
+      throw SimulationError(
+          fmt::format("cell grid: particles spread over {:.3g} interaction ranges along axis {}; "
+                      "a particle has escaped",
+                      extent, k));
+    origin_[k] = lo[k] - kPad * edge_;
+    dims_[k] = static_cast<std::size_t>(extent) + 1 + 2 * kPad;
+    strides_[k] = cell_count_;
+    cell_count_ *= dims_[k];
+    if (cell_count_ > kMaxCells)
+      throw SimulationError("cell grid: too many cells; particles are spread too far apart");
+  }
+
+  real_cell_.resize(x.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    real_cell_[static_cast<std::size_t>(i)] =
+        static_cast<std::uint32_t>(cell_of(x[static_cast<std::size_t>(i)]));
+  counting_sort(real_cell_, 0, real_start_, order_);
+  // The cells in the sorted order (a counting sort leaves them ascending).
+  for (std::size_t c = 0; c < cell_count_; ++c)
+    for (std::uint32_t k = real_start_[c]; k < real_start_[c + 1]; ++k)
+      real_cell_[k] = static_cast<std::uint32_t>(c);
+  return order_;
+}
+
+template <int D>
+const std::vector<std::uint32_t>& CellGrid<D>::sort_ghosts(std::span<const Vec<D>> ghost_x) {
+  ghost_cell_.resize(ghost_x.size());
+  const auto n = static_cast<long>(ghost_x.size());
+#pragma omp parallel for schedule(static)
+  for (long g = 0; g < n; ++g)
+    ghost_cell_[static_cast<std::size_t>(g)] =
+        static_cast<std::uint32_t>(cell_of(ghost_x[static_cast<std::size_t>(g)]));
+  counting_sort(ghost_cell_, static_cast<std::uint32_t>(n_real_), ghost_start_, order_);
+  return order_;
+}
+
+template <int D>
+std::size_t CellGrid<D>::bytes() const {
+  return sizeof(std::uint32_t) *
+         (real_start_.capacity() + ghost_start_.capacity() + real_cell_.capacity() +
+          ghost_cell_.capacity() + order_.capacity());
+}
+
+template class CellGrid<2>;
+template class CellGrid<3>;
+
+}  // namespace flume

@@ -1,0 +1,295 @@
+// Unit tests of the cell grid and the sweep driver (src/flume/neighbors/cell_grid.*,
+// src/flume/schemes/sweep.hpp): on uniform, clustered and degenerate clouds in 2D and 3D, with
+// and without mirror-wall ghosts, the sweep hands every pair within the support to the equations
+// exactly once (the self pair included), compared with the O(N^2) reference; the sums it builds
+// do not depend on the thread count to the last bit; bad input is refused.
+//
+// Pair membership is the comparison |x_i - x_j|^2 < cutoff^2 in both searches (cutoff = 2h with
+// the support-2 cubic spline, and 2 (cutoff / 2) == cutoff exactly), so every comparison here is
+// exact: no tolerance is involved.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <span>
+#include <vector>
+
+#include "flume/core/error.hpp"
+#include "flume/kernels/cubic_spline.hpp"
+#include "flume/neighbors/brute_force.hpp"
+#include "flume/neighbors/cell_grid.hpp"
+#include "flume/schemes/sweep.hpp"
+#include "support/rates.hpp"
+#include "support/small_cases.hpp"
+
+namespace flume {
+namespace {
+
+// --- clouds -------------------------------------------------------------------------------------
+template <int D>
+std::vector<Vec<D>> uniform_cloud(std::size_t n, double lo, double hi, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<Vec<D>> x(n);
+  for (auto& p : x)
+    for (int k = 0; k < D; ++k)
+      p[k] = u(rng);
+  return x;
+}
+
+// A few tight Gaussian clusters far apart plus a thin uniform background: most cells are empty,
+// a few are crowded.
+template <int D>
+std::vector<Vec<D>> clustered_cloud(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  // A 3-unit box: with cutoffs ~0.05 the bounding-box grid (which covers empty space too) stays
+  // at ~60^D cells, so the test stays fast.
+  std::uniform_real_distribution<double> u(0.0, 3.0);
+  std::normal_distribution<double> g(0.0, 0.05);
+  std::vector<Vec<D>> centres(4);
+  for (auto& c : centres)
+    for (int k = 0; k < D; ++k)
+      c[k] = u(rng);
+  std::vector<Vec<D>> x(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % 10 == 9) {
+      for (int k = 0; k < D; ++k)
+        x[i][k] = u(rng);
+    } else {
+      const auto& c = centres[i % centres.size()];
+      for (int k = 0; k < D; ++k)
+        x[i][k] = c[k] + g(rng);
+    }
+  }
+  return x;
+}
+
+// Points on an exact lattice of spacing `cutoff` / 2 (a dyadic cutoff, so every coordinate is an
+// exact multiple of the cell edge and half the points sit exactly on cell faces, and many pairs
+// are exactly `cutoff` apart, the excluded boundary of the strict test), every point duplicated,
+// and a few random points mixed in.
+template <int D>
+std::vector<Vec<D>> face_cloud(double cutoff, int per_axis, std::uint64_t seed) {
+  std::vector<Vec<D>> x;
+  std::array<int, D> idx{};
+  while (true) {
+    Vec<D> p;
+    for (int k = 0; k < D; ++k)
+      p[k] = 0.5 * cutoff * idx[k];
+    x.push_back(p);
+    x.push_back(p);  // exact duplicate: distance 0 < cutoff
+    int k = 0;
+    while (k < D && ++idx[k] == per_axis)
+      idx[k++] = 0;
+    if (k == D) break;
+  }
+  auto extra = uniform_cloud<D>(x.size() / 4, 0.0, 0.5 * cutoff * (per_axis - 1), seed);
+  x.insert(x.end(), extra.begin(), extra.end());
+  // Interleave so that duplicates and face points are not all at the start.
+  std::mt19937_64 rng(seed + 1);
+  std::shuffle(x.begin(), x.end(), rng);
+  return x;
+}
+
+// --- the counting equation ------------------------------------------------------------------
+
+// Counts the pairs each particle is handed, and sums the partners' ids (a checksum of which
+// partners), and m_j W_ij (a floating-point sum whose bits depend on the order of its terms).
+struct PairTally {
+  double count = 0.0;
+  double id_sum = 0.0;
+  double weighted = 0.0;
+};
+
+template <int D>
+struct CountPairs {
+  using Acc = PairTally;
+  const ParticleSet<D>& ps;
+  std::vector<PairTally>& out;
+
+  Acc init(std::size_t) const { return {}; }
+  void pair(Acc& ai, Acc& aj, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    ai.count += 1.0;
+    ai.id_sum += static_cast<double>(ps.id[j]);
+    ai.weighted += ps.m[j] * g.w;
+    aj.count += 1.0;
+    aj.id_sum += static_cast<double>(ps.id[i]);
+    aj.weighted += ps.m[i] * g.w;
+  }
+  void finish(Acc& a, std::size_t i) const { out[i] = a; }
+};
+
+template <int D>
+ParticleSet<D> particles(const std::vector<Vec<D>>& x, double h) {
+  ParticleSet<D> ps;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    ps.add_real(static_cast<std::int64_t>(i), x[i], Vec<D>{}, 1.0 + 0.001 * static_cast<double>(i),
+                1000.0, h);
+  return ps;
+}
+
+// The tallies of every real particle of ps (in the caller's order), by the sweep.
+template <int D>
+std::vector<PairTally> sweep_tally(ParticleSet<D> ps, const BoxWalls<D>* walls) {
+  std::vector<PairTally> tally;
+  test::in_cell_order(CubicSpline<D>::support, ps, walls,
+                      [&](ParticleSet<D>& s, const SweepContext<D>& ctx, const Halo<D>&) {
+                        std::vector<PairTally> sorted(s.n_real);
+                        CountPairs<D> eq{s, sorted};
+                        sweep<D, CubicSpline<D>>(ctx, s, "count", eq);
+                        // Back to the caller's order through the ids (= caller's indices).
+                        tally.resize(s.n_real);
+                        for (std::size_t k = 0; k < s.n_real; ++k)
+                          tally[static_cast<std::size_t>(s.id[k])] = sorted[k];
+                      });
+  return tally;
+}
+
+// The expected counts and id sums: every point within the cutoff, ghosts included (a ghost
+// carries its source's id).
+template <int D>
+void expect_all_pairs_once(const std::vector<Vec<D>>& x, double cutoff,
+                           const BoxWalls<D>* walls = nullptr) {
+  auto ps = particles<D>(x, 0.5 * cutoff);
+  const auto tally = sweep_tally<D>(ps, walls);
+  // The reference: the real particles and (with walls) their ghosts, searched by brute force.
+  Halo<D> halo;
+  if (walls) walls->build_halo(ps, cutoff, halo);
+  halo.append_ghosts(ps);
+  const NeighborList nl =
+      brute_force_neighbors<D>(std::span<const Vec<D>>(ps.x), ps.n_real, cutoff);
+  ASSERT_EQ(tally.size(), ps.n_real);
+  for (std::size_t i = 0; i < ps.n_real; ++i) {
+    double count = 0.0, id_sum = 0.0;
+    for (const auto j : nl.of(i)) {
+      count += 1.0;
+      id_sum += static_cast<double>(ps.id[j]);
+    }
+    EXPECT_EQ(tally[i].count, count) << "particle " << i;
+    EXPECT_EQ(tally[i].id_sum, id_sum) << "particle " << i;
+  }
+}
+
+// Restores the OpenMP thread count on scope exit, so a failing assertion cannot leak it.
+class ThreadCount {
+ public:
+  ThreadCount() : saved_(omp_get_max_threads()) {}
+  ~ThreadCount() { omp_set_num_threads(saved_); }
+  ThreadCount(const ThreadCount&) = delete;
+  ThreadCount& operator=(const ThreadCount&) = delete;
+
+ private:
+  int saved_;
+};
+
+// --- tests --------------------------------------------------------------------------------------
+
+TEST(Sweep, UniformCloudEveryPairOnce2D) {
+  expect_all_pairs_once<2>(uniform_cloud<2>(900, 0.0, 1.0, 1), 0.08);
+}
+TEST(Sweep, UniformCloudEveryPairOnce3D) {
+  expect_all_pairs_once<3>(uniform_cloud<3>(1500, 0.0, 1.0, 2), 0.2);
+}
+TEST(Sweep, ClusteredCloudEveryPairOnce2D) {
+  expect_all_pairs_once<2>(clustered_cloud<2>(800, 3), 0.05);
+}
+TEST(Sweep, ClusteredCloudEveryPairOnce3D) {
+  expect_all_pairs_once<3>(clustered_cloud<3>(800, 4), 0.1);
+}
+TEST(Sweep, DuplicatesAndFacePointsEveryPairOnce2D) {
+  expect_all_pairs_once<2>(face_cloud<2>(0.125, 12, 5), 0.125);
+}
+TEST(Sweep, DuplicatesAndFacePointsEveryPairOnce3D) {
+  expect_all_pairs_once<3>(face_cloud<3>(0.25, 6, 6), 0.25);
+}
+
+TEST(Sweep, MirrorGhostsEveryPairOnce) {
+  // A cloud in the unit box whose four (2D) or six (3D) sides are mirror walls: particles near a
+  // side or a corner meet their one, two or three images.
+  const auto walls2 = [] {
+    auto w = test::open_box<2>(0.0, 1.0);
+    for (auto& axis : w.kind)
+      axis = {WallKind::free_slip, WallKind::no_slip};
+    return w;
+  }();
+  expect_all_pairs_once<2>(uniform_cloud<2>(900, 0.0, 1.0, 7), 0.08, &walls2);
+  const auto walls3 = [] {
+    auto w = test::open_box<3>(0.0, 1.0);
+    for (auto& axis : w.kind)
+      axis = {WallKind::free_slip, WallKind::free_slip};
+    return w;
+  }();
+  expect_all_pairs_once<3>(uniform_cloud<3>(1500, 0.0, 1.0, 8), 0.2, &walls3);
+}
+
+TEST(Sweep, SumsAreBitIdenticalForAnyThreadCount) {
+  const ThreadCount restore;
+  const auto x = uniform_cloud<2>(4000, 0.0, 1.0, 9);
+  auto walls = test::open_box<2>(0.0, 1.0);
+  for (auto& axis : walls.kind)
+    axis = {WallKind::free_slip, WallKind::free_slip};
+  std::vector<std::vector<PairTally>> runs;
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    runs.push_back(sweep_tally<2>(particles<2>(x, 0.02), &walls));
+  }
+  for (std::size_t r = 1; r < runs.size(); ++r)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      ASSERT_EQ(runs[r][i].weighted, runs[0][i].weighted)
+          << "threads run " << r << ", particle " << i;
+      ASSERT_EQ(runs[r][i].count, runs[0][i].count);
+    }
+}
+
+TEST(CellGrid, NonFinitePositionThrows) {
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      auto x = uniform_cloud<3>(50, 0.0, 1.0, 81);
+      x[17][axis] = bad;
+      CellGrid<3> grid;
+      EXPECT_THROW(grid.sort_real(std::span<const Vec<3>>(x), 0.2), SimulationError)
+          << "value " << bad << " on axis " << axis;
+    }
+  }
+}
+
+TEST(CellGrid, NonPositiveRangeThrows) {
+  const auto x = uniform_cloud<2>(10, 0.0, 1.0, 91);
+  CellGrid<2> grid;
+  EXPECT_THROW(grid.sort_real(std::span<const Vec<2>>(x), 0.0), SimulationError);
+  EXPECT_THROW(grid.sort_real(std::span<const Vec<2>>(x), -1.0), SimulationError);
+  EXPECT_THROW(grid.sort_real(std::span<const Vec<2>>(x), std::numeric_limits<double>::quiet_NaN()),
+               SimulationError);
+}
+
+TEST(CellGrid, EscapedParticleThrowsInsteadOfAllocating) {
+  auto x = uniform_cloud<3>(20, 0.0, 1.0, 92);
+  x[3][2] = 1e12;  // 1e13 ranges away: far beyond any sane grid
+  CellGrid<3> grid;
+  EXPECT_THROW(grid.sort_real(std::span<const Vec<3>>(x), 0.1), SimulationError);
+}
+
+TEST(CellGrid, SortIsAStablePermutationByCell) {
+  const auto x = uniform_cloud<2>(500, 0.0, 1.0, 93);
+  CellGrid<2> grid;
+  const auto order = grid.sort_real(std::span<const Vec<2>>(x), 0.1);
+  std::vector<std::uint32_t> seen(order.begin(), order.end());
+  std::sort(seen.begin(), seen.end());
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    ASSERT_EQ(seen[k], k);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    ASSERT_LE(grid.cell_of_real(k - 1), grid.cell_of_real(k));
+    if (grid.cell_of_real(k - 1) == grid.cell_of_real(k)) {
+      ASSERT_LT(order[k - 1], order[k]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace flume
