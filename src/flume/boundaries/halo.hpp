@@ -49,6 +49,7 @@ class Halo {
   // Appends one ghost per map after the real particles and fills its state.
   void append_ghosts(ParticleSet<D>& ps) const {
     const std::size_t n = ps.n_real;
+    ps.reserve(n + maps_.size());
     ps.resize(n + maps_.size());
     const auto count = static_cast<long>(maps_.size());
 #pragma omp parallel for schedule(static)

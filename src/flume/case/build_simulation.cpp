@@ -44,15 +44,27 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   const double g = norm(phys.gravity);
   const double h = spec.h_over_dx * dx;
   std::int64_t next_id = 0;
-  for (const auto& block : spec.blocks) {
+  // A block of width L holds floor(L/dx) particles per row; the tolerance absorbs the round-off
+  // of spacings given as L/n.
+  auto counts = [dx](const FluidBlock& block) {
     std::array<long, D> count{};
-    long total = 1;
-    for (int k = 0; k < D; ++k) {
-      // A block of width L holds floor(L/dx) particles per row; the tolerance absorbs the
-      // round-off of spacings given as L/n.
+    for (int k = 0; k < D; ++k)
       count[k] = static_cast<long>(std::floor((block.max[k] - block.min[k]) / dx + 1e-6));
+    return count;
+  };
+  std::size_t particles = 0;  // reserved up front: growth by doubling would inflate the peak memory
+  for (const auto& block : spec.blocks) {
+    std::size_t n = 1;
+    for (const long c : counts(block))
+      n *= static_cast<std::size_t>(c);
+    particles += n;
+  }
+  ps.reserve(particles);
+  for (const auto& block : spec.blocks) {
+    const std::array<long, D> count = counts(block);
+    long total = 1;
+    for (int k = 0; k < D; ++k)
       total *= count[k];
-    }
     const double top = block.max[D - 1];
     std::array<long, D> idx{};
     for (long n = 0; n < total; ++n) {

@@ -16,7 +16,9 @@ void sort_state(ParticleSet<D>& ps, const std::vector<std::uint32_t>& order, Swe
   const auto n = static_cast<long>(order.size());
   ps.for_each_state_field([&](auto& field) {
     using T = typename std::decay_t<decltype(field)>::value_type;
-    auto& out = work.buffer<T>(0, order.size());
+    auto& out = work.buffer<T>(0, 0);
+    out.reserve(field.capacity());  // the buffers trade places: both keep room for the ghosts
+    out.resize(order.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < n; ++k)
       out[static_cast<std::size_t>(k)] = field[order[static_cast<std::size_t>(k)]];
