@@ -113,11 +113,11 @@ struct CountPairs {
 
   Acc init(std::size_t) const { return {}; }
   void pair(Acc& ai, Acc& aj, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    ai.count += 1.0;
-    ai.id_sum += static_cast<double>(ps.id[j]);
+    ai.count += g.in;
+    ai.id_sum += g.in * static_cast<double>(ps.id[j]);
     ai.weighted += ps.m[j] * g.w;
-    aj.count += 1.0;
-    aj.id_sum += static_cast<double>(ps.id[i]);
+    aj.count += g.in;
+    aj.id_sum += g.in * static_cast<double>(ps.id[i]);
     aj.weighted += ps.m[i] * g.w;
   }
   void finish(Acc& a, std::size_t i) const { out[i] = a; }

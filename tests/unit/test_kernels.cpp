@@ -194,6 +194,30 @@ void expect_scaling() {
   }
 }
 
+template <class K>
+void expect_gradient_factor() {
+  // gradient_factor(r) = (1/r) dW/dr, the form the sweep uses for grad W = x_ij * factor.
+  // r * factor is checked against central differences of W itself (tolerance as in
+  // expect_derivative); at r = 0 the factor must be finite and the limit of its neighbours: it
+  // is smooth in q there with |dF/dq| <= 3 |F(0)|, so a step of 1e-9 h moves it by at most
+  // 3e-9 of its size (tolerance 1e-8).
+  const double h = 0.37;
+  const double s = 1e-4 * h;
+  const double scale = K::w(0.0, h) / h;
+  const int n = 997;
+  for (int i = 0; i <= n; ++i) {
+    const double r = 2.0 * s + (K::support * h - 4.0 * s) * i / n;
+    const double fd = (K::w(r + s, h) - K::w(r - s, h)) / (2.0 * s);
+    EXPECT_NEAR(r * K::gradient_factor(r, h), fd, 1e-6 * scale) << "r = " << r;
+  }
+  const double f0 = K::gradient_factor(0.0, h);
+  EXPECT_TRUE(std::isfinite(f0));
+  EXPECT_LT(f0, 0.0);
+  EXPECT_NEAR(f0, K::gradient_factor(1e-9 * h, h), 1e-8 * std::abs(f0));
+  for (double f : {1.0, 1.01, 2.0})
+    EXPECT_EQ(K::gradient_factor(f * K::support * h, h), 0.0) << "r = " << f << " * support";
+}
+
 // Every property for kernel Kernel<D>, as tests named Kernels.<Short><Property><Dim>.
 #define FLUME_KERNEL_TESTS(Short, Kernel, D, Dim) \
   TEST(Kernels, Short##Normalisation##Dim) {      \
@@ -213,6 +237,9 @@ void expect_scaling() {
   }                                               \
   TEST(Kernels, Short##Scaling##Dim) {            \
     expect_scaling<Kernel<D>>();                  \
+  }                                               \
+  TEST(Kernels, Short##GradientFactor##Dim) {     \
+    expect_gradient_factor<Kernel<D>>();          \
   }
 
 FLUME_KERNEL_TESTS(Cubic, CubicSpline, 1, 1D)

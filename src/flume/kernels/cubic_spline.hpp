@@ -44,6 +44,18 @@ struct CubicSpline {
     return r < support * h ? v : 0.0;
   }
 
+  // (1/r) dW/dr in 1/m^(D+2), finite at r = 0 (grad W = x_ij * gradient_factor, no division by
+  // r): the derivative above divided by q is -3 + 9/4 q on q < 1 and -3/4 (2 - q)^2 / q beyond.
+  static double gradient_factor(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double a = std::max(0.0, 2.0 - q);
+    const double inner = -3.0 + 2.25 * q;
+    const double outer = -0.75 * a * a / std::max(q, 1.0);
+    const double v = norm * inv_hd(ih) * ih * ih * (q < 1.0 ? inner : outer);
+    return r < support * h ? v : 0.0;
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

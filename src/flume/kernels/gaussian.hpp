@@ -53,6 +53,14 @@ struct Gaussian {
     return r < support * h ? v : 0.0;
   }
 
+  // (1/r) dW/dr in 1/m^(D+2), finite at r = 0 (grad W = x_ij * gradient_factor).
+  static double gradient_factor(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double v = -2.0 * norm * inv_hd(ih) * ih * ih * std::exp(-q * q);
+    return r < support * h ? v : 0.0;
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

@@ -48,6 +48,21 @@ struct QuinticSpline {
     return r < support * h ? v : 0.0;
   }
 
+  // (1/r) dW/dr in 1/m^(D+2), finite at r = 0 (grad W = x_ij * gradient_factor, no division by
+  // r). On q < 1 the bracket of dwdr is 24 q - 24 q^3 + 10 q^4 (the constants cancel), so it
+  // divides by q exactly; beyond, c = 0 and q >= 1.
+  static double gradient_factor(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double a = std::max(0.0, 3.0 - q);
+    const double b = std::max(0.0, 2.0 - q);
+    const double a2 = a * a, b2 = b * b;
+    const double inner = 24.0 + q * q * (-24.0 + 10.0 * q);
+    const double outer = (a2 * a2 - 6.0 * b2 * b2) / std::max(q, 1.0);
+    const double v = -5.0 * norm * inv_hd(ih) * ih * ih * (q < 1.0 ? inner : outer);
+    return r < support * h ? v : 0.0;
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

@@ -51,6 +51,20 @@ struct WendlandC2 {
     return r < support * h ? v : 0.0;
   }
 
+  // (1/r) dW/dr in 1/m^(D+2), finite at r = 0, so that grad W = x_ij * gradient_factor needs no
+  // division by r: -3 (1 - q/2)^2 / h^2 (1D) and -5 (1 - q/2)^3 / h^2 (2D, 3D) times norm / h^D.
+  static double gradient_factor(double r, double h) noexcept {
+    const double ih = 1.0 / h;
+    const double t = std::max(0.0, 1.0 - 0.5 * r * ih);
+    double v;
+    if constexpr (D == 1) {
+      v = -3.0 * norm * ih * ih * ih * t * t;
+    } else {
+      v = -5.0 * norm * inv_hd(ih) * ih * ih * t * t * t;
+    }
+    return r < support * h ? v : 0.0;
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 #include "flume/boundaries/halo.hpp"
+#include "flume/equations/acceleration_sum.hpp"
 #include "flume/equations/shepard_filter_w63.hpp"
 #include "flume/equations/velocity_gradient_bl22.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
@@ -57,7 +59,8 @@ void update_viscous_stress(const SweepContext<D>& ctx, ParticleSet<D>& ps, const
 
 // Sweep: a_a = g + the equations given (a pressure force, ...) + physical viscosity BL (24)
 // (when mu > 0, from ps.stress) + artificial viscosity W (3.18) (when alpha or beta > 0). The
-// terms that are off are left out of the sweep, not evaluated as zeros.
+// terms that are off are left out of the sweep, not evaluated as zeros; the terms on share one
+// accumulator (AccelerationSum).
 template <int D, class Kernel, class... Forces>
 void accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<D>& phys,
                 Forces&... forces) {
@@ -65,14 +68,18 @@ void accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<D>
   ViscosityBonetLok24<D> viscous{ps};
   ViscosityArtificialMonaghan<D> artificial{ps, phys.av_alpha, phys.av_beta};
   const bool av = phys.av_alpha != 0.0 || phys.av_beta != 0.0;
+  auto run = [&](const auto&... terms) {
+    AccelerationSum<D, std::remove_cvref_t<decltype(terms)>...> sum{ps, terms...};
+    sweep<D, Kernel>(ctx, ps, "force", sum);
+  };
   if (phys.mu > 0.0 && av)
-    sweep<D, Kernel>(ctx, ps, "force", forces..., viscous, artificial);
+    run(forces..., viscous, artificial);
   else if (phys.mu > 0.0)
-    sweep<D, Kernel>(ctx, ps, "force", forces..., viscous);
+    run(forces..., viscous);
   else if (av)
-    sweep<D, Kernel>(ctx, ps, "force", forces..., artificial);
+    run(forces..., artificial);
   else
-    sweep<D, Kernel>(ctx, ps, "force", forces...);
+    run(forces...);
 }
 
 }  // namespace flume

@@ -19,8 +19,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "flume/core/particle_set.hpp"
@@ -92,6 +94,130 @@ struct RowOffsets {
   }
 };
 
+constexpr std::size_t kChunk = 64;  // candidates evaluated in one vectorised block
+constexpr std::size_t kLanes = 8;   // partial sums of i's share: term k goes to sum k % kLanes
+
+// Particle i's shares of the pairs of one block, and their kLanes partial sums. An accumulator
+// is seen as the doubles it is made of (every Acc is: double, Vec, Mat, or arrays and structs
+// of them), stored component by component so that the block loop writes them with unit stride.
+template <class Acc>
+struct Shares {
+  static_assert(std::is_trivially_copyable_v<Acc> && sizeof(Acc) % sizeof(double) == 0,
+                "an accumulator is made of doubles only");
+  static constexpr std::size_t kDoubles = sizeof(Acc) / sizeof(double);
+  using Flat = std::array<double, kDoubles>;
+
+  alignas(64) double block[kDoubles][kChunk];
+  alignas(64) double partial[kDoubles][kLanes];
+
+  void clear() {
+    for (auto& p : partial)
+      for (double& v : p)
+        v = 0.0;
+  }
+  void put(std::size_t k, const Acc& a) {
+    const auto f = std::bit_cast<Flat>(a);
+    for (std::size_t d = 0; d < kDoubles; ++d)
+      block[d][k] = f[d];
+  }
+  void add_lane(std::size_t l, const Acc& a) {
+    const auto f = std::bit_cast<Flat>(a);
+    for (std::size_t d = 0; d < kDoubles; ++d)
+      partial[d][l] += f[d];
+  }
+  // Adds the first n shares of the block: share k to partial sum k % kLanes.
+  void fold(std::size_t n) {
+    for (std::size_t d = 0; d < kDoubles; ++d) {
+      std::size_t k0 = 0;
+      for (; k0 + kLanes <= n; k0 += kLanes)
+        for (std::size_t l = 0; l < kLanes; ++l)
+          partial[d][l] += block[d][k0 + l];
+      for (std::size_t l = 0; k0 + l < n; ++l)
+        partial[d][l] += block[d][k0 + l];
+    }
+  }
+  // a + the partial sums in lane order (an order fixed by the positions alone).
+  Acc total(const Acc& a) const {
+    auto sum = std::bit_cast<Flat>(a);
+    for (std::size_t l = 0; l < kLanes; ++l)
+      for (std::size_t d = 0; d < kDoubles; ++d)
+        sum[d] += partial[d][l];
+    return std::bit_cast<Acc>(sum);
+  }
+};
+
+// Pair (i, j) of a block: i's share goes to partial sum k (Lanes) or to shares.block[k], j's
+// to acc[j] (Real) or to a dropped local (a ghost j, whose accumulator is not kept).
+template <bool Real, bool Lanes, class Eq, class Acc, int D>
+inline void pair_share(const Eq& eq, Acc* acc, Shares<Acc>& shares, std::size_t i, std::size_t j,
+                       std::size_t k, const Pair<D>& g) {
+  Acc a_i{};
+  if constexpr (Real) {
+    eq.pair(a_i, acc[j], i, j, g);
+  } else {
+    Acc dropped{};
+    eq.pair(a_i, dropped, i, j, g);
+  }
+  if constexpr (Lanes)
+    shares.add_lane(k, a_i);
+  else
+    shares.put(k, a_i);
+}
+
+// Pairs (i, j) for j in [lo, ce), evaluated over the window [cb, ce) (cb <= lo, at most kChunk
+// candidates). The loop has no branch: a candidate beyond the support, or before lo, gets
+// in = 0, w = 0 and grad W = 0 (every term of an SPH sum carries W or grad W, so its shares are
+// exactly zero), and the compiler vectorises the loop over j. flatten inlines the equations.
+// When the window is a whole number of kLanes (Lanes), it is walked in groups of kLanes, lane l
+// of each group adding i's share to partial sum l directly; otherwise the shares go through
+// shares.block and are folded after the loop.
+template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
+          class ShareTuple, std::size_t... I>
+[[gnu::flatten]] void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
+                                 ShareTuple& shares, std::size_t i, std::size_t cb, std::size_t lo,
+                                 std::size_t ce, std::index_sequence<I...>) {
+  const Vec<D>* x = ps.x.data();
+  const double* hs = ps.h.data();
+  const Vec<D> xi = x[i];
+  const double hi = hs[i];
+  const double cut0 = Kernel::support * h0;
+  const double cut2_0 = cut0 * cut0;
+  auto pair_at = [&](std::size_t j, std::size_t k) {
+    Pair<D> g;
+    g.xij = xi - x[j];
+    const double r2 = norm2(g.xij);
+    double h = h0, cut2 = cut2_0;
+    if constexpr (!UniformH) {
+      h = 0.5 * (hi + hs[j]);
+      cut2 = Kernel::support * h * Kernel::support * h;
+    }
+    const bool in = r2 < cut2 && j >= lo;
+    g.r = std::sqrt(r2);
+    g.h = h;
+    // Evaluated in every lane, then masked (a masked evaluation would redo 1/h in the loop).
+    const double w = Kernel::w(g.r, h);
+    const double factor = Kernel::gradient_factor(g.r, h);
+    g.w = in ? w : 0.0;
+    g.gradw = g.xij * (in ? factor : 0.0);
+    g.in = in ? 1.0 : 0.0;
+    (pair_share<Real, Lanes>(std::get<I>(eqs), std::get<I>(acc), std::get<I>(shares), i, j, k, g),
+     ...);
+  };
+  if constexpr (Lanes) {
+    for (std::size_t gb = cb; gb < ce; gb += kLanes) {
+      // ivdep: the lanes touch different j and different partial sums.
+#pragma GCC ivdep
+      for (std::size_t l = 0; l < kLanes; ++l)
+        pair_at(gb + l, l);
+    }
+  } else {
+#pragma GCC ivdep
+    for (std::size_t j = cb; j < ce; ++j)
+      pair_at(j, j - cb);
+    (std::get<I>(shares).fold(ce - cb), ...);
+  }
+}
+
 template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
                  std::index_sequence<I...>) {
@@ -102,29 +228,32 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
   const long slabs = (layers + kSlabLayers - 1) / kSlabLayers;
   const RowOffsets<D> rows(grid.strides());
   const double h0 = ctx.uniform_h;
-  const double cut0 = Kernel::support * h0;
-  const double cut2_0 = cut0 * cut0;
-  const auto* x = ps.x.data();
+  const double w0 = UniformH ? Kernel::w(0.0, h0) : 0.0;  // W(0) of the self pair
   const auto* hs = ps.h.data();
 
-  // Adds pair (i, j) to ai and aj when j is within the support of the pair smoothing length.
-  auto visit = [&](std::size_t i, std::size_t j, Accs& ai, auto&& aj_of) {
-    Pair<D> g;
-    g.xij = x[i] - x[j];
-    const double r2 = norm2(g.xij);
-    double h = h0, cut2 = cut2_0;
-    if constexpr (!UniformH) {
-      h = 0.5 * (hs[i] + hs[j]);
-      cut2 = Kernel::support * h * Kernel::support * h;
+  // Per thread: i's shares of the pairs of a block, and their partial sums.
+  std::tuple<Shares<std::tuple_element_t<I, Accs>>...> shares;
+  const std::index_sequence<I...> seq;
+  // Pairs (i, j), j in [jb, je), in blocks of kChunk. A block of n candidates that is not a
+  // whole number of kLanes is widened backwards to one (its first lanes masked), so the
+  // vectorised loop never ends in a scalar remainder. The widened window may reach particles of
+  // other cells: their shares are exact zeros, but a real j's accumulator is still written, so
+  // the window must stay within [owned, je), the particles whose accumulators only this thread
+  // touches in this phase (its slab's layers and the next); ghosts are not written at all.
+  std::size_t owned = 0;
+  auto run = [&](std::size_t i, std::size_t jb, std::size_t je, auto real) {
+    constexpr bool kReal = decltype(real)::value;
+    const std::size_t floor = kReal ? owned : 0;
+    for (std::size_t cb = jb; cb < je; cb += kChunk) {
+      const std::size_t ce = std::min(je, cb + kChunk);
+      const std::size_t n = ce - cb;
+      const std::size_t widened = (n + kLanes - 1) / kLanes * kLanes;
+      if (ce >= floor + widened)
+        pair_block<D, Kernel, UniformH, kReal, true>(ps, h0, eqs, acc, shares, i, ce - widened, cb,
+                                                     ce, seq);
+      else
+        pair_block<D, Kernel, UniformH, kReal, false>(ps, h0, eqs, acc, shares, i, cb, cb, ce, seq);
     }
-    if (!(r2 < cut2)) return;
-    g.r = std::sqrt(r2);
-    g.h = h;
-    g.w = Kernel::w(g.r, h);
-    if (g.r > 0.0) g.gradw = g.xij * (Kernel::dwdr(g.r, h) / g.r);
-    (std::get<I>(eqs).pair(std::get<I>(ai), aj_of(std::integral_constant<std::size_t, I>{}), i, j,
-                           g),
-     ...);
   };
 
   for (int phase = 0; phase < 2; ++phase) {
@@ -134,45 +263,35 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
       const std::size_t c_end = std::min(static_cast<std::size_t>(s + 1) * kSlabLayers,
                                          static_cast<std::size_t>(layers)) *
                                 layer;
+      owned = grid.real_begin(c_begin);
       for (std::size_t c = c_begin; c < c_end; ++c) {
         const std::size_t b = grid.real_begin(c), e = grid.real_begin(c + 1);
         if (b == e) continue;
         for (std::size_t i = b; i < e; ++i) {
           Accs ai{std::get<I>(acc)[i]...};
-          Accs scratch{};
-          auto to_scratch = [&](auto k) -> decltype(auto) {
-            return std::get<decltype(k)::value>(scratch);
-          };
-          auto to_real = [&](std::size_t j) {
-            return [&acc, j](auto k) -> decltype(auto) {
-              return std::get<decltype(k)::value>(acc)[j];
-            };
-          };
+          (std::get<I>(shares).clear(), ...);
           {  // the self pair
+            Accs scratch{};
             Pair<D> g0;
             g0.h = hs[i];
-            g0.w = Kernel::w(0.0, hs[i]);
+            g0.w = UniformH ? w0 : Kernel::w(0.0, hs[i]);
             (std::get<I>(eqs).pair(std::get<I>(ai), std::get<I>(scratch), i, i, g0), ...);
           }
           // The rest of the own cell and the cell after it along x: one run.
-          const std::size_t own_end = grid.real_begin(c + 2);
-          for (std::size_t j = i + 1; j < own_end; ++j)
-            visit(i, j, ai, to_real(j));
+          run(i, i + 1, grid.real_begin(c + 2), std::true_type{});
           for (int r = 0; r < RowOffsets<D>::kAhead; ++r) {
             const std::size_t cr =
                 c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            const std::size_t jb = grid.real_begin(cr - 1), je = grid.real_begin(cr + 2);
-            for (std::size_t j = jb; j < je; ++j)
-              visit(i, j, ai, to_real(j));
+            run(i, grid.real_begin(cr - 1), grid.real_begin(cr + 2), std::true_type{});
           }
           for (int r = 0; r < RowOffsets<D>::kRows; ++r) {
             const std::size_t cr =
                 c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            const std::size_t jb = grid.ghost_begin(cr - 1), je = grid.ghost_begin(cr + 2);
-            for (std::size_t j = jb; j < je; ++j)
-              visit(i, j, ai, to_scratch);
+            run(i, grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2), std::false_type{});
           }
-          ((std::get<I>(acc)[i] = std::get<I>(ai)), ...);
+          // i's accumulator: what earlier particles gave it as their j, the self pair, then
+          // the partial sums.
+          ((std::get<I>(acc)[i] = std::get<I>(shares).total(std::get<I>(ai))), ...);
         }
       }
     }
