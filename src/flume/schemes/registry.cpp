@@ -5,11 +5,7 @@
 #include <map>
 
 #include "flume/core/error.hpp"
-#include "flume/equations/force_bonet_lok_20.hpp"
-#include "flume/equations/force_bonet_lok_7.hpp"
-#include "flume/schemes/continuity_scheme.hpp"
-#include "flume/schemes/csph_scheme.hpp"
-#include "flume/schemes/summation_scheme.hpp"
+#include "flume/schemes/kernel_schemes.hpp"
 
 namespace flume {
 
@@ -50,19 +46,12 @@ const std::vector<std::string>& scheme_combinations() {
 template <int D>
 std::unique_ptr<Scheme<D>> make_scheme(const SchemeRows& rows, KernelKind kernel,
                                        const Physics<D>& phys) {
-  return with_kernel<D>(kernel, [&](auto k) -> std::unique_ptr<Scheme<D>> {
-    using K = decltype(k);
-    if (rows.density == "summation" && rows.force == "bl7")
-      return std::make_unique<SummationScheme<D, K, ForceBonetLok7>>(phys);
-    if (rows.density == "summation" && rows.force == "bl20")
-      return std::make_unique<SummationScheme<D, K, ForceBonetLok20>>(phys);
-    if (rows.density == "continuity" && rows.force == "bl20")
-      return std::make_unique<ContinuityScheme<D, K>>(phys);
-    if (rows.density == "continuity" && rows.force == "bl59")
-      return std::make_unique<CsphScheme<D, K>>(phys);
+  auto scheme = with_kernel<D>(
+      kernel, [&](auto k) { return make_kernel_scheme<D, decltype(k)>(rows, phys); });
+  if (!scheme)
     throw InputError(fmt::format("no scheme combines density '{}' with force '{}'; available: {}",
                                  rows.density, rows.force, fmt::join(scheme_combinations(), ", ")));
-  });
+  return scheme;
 }
 
 template std::unique_ptr<Scheme<2>> make_scheme<2>(const SchemeRows&, KernelKind,

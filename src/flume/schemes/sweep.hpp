@@ -31,6 +31,14 @@
 #include "flume/schemes/sweep_workspace.hpp"
 #include "flume/sim/phase_clock.hpp"
 
+// flatten inlines the equations into the vectorised pair loop. The sanitizer build (a test build,
+// not a fast one) goes without: with the instrumentation, flattening multiplies its compile time.
+#if defined(__SANITIZE_ADDRESS__)
+#define FLUME_FLATTEN
+#else
+#define FLUME_FLATTEN [[gnu::flatten]]
+#endif
+
 namespace flume {
 
 // What a sweep needs besides the particles: the cell grid of this step, scratch arrays, the
@@ -149,8 +157,8 @@ struct Shares {
 // Pair (i, j) of a block: i's share goes to partial sum k (Lanes) or to shares.block[k], j's
 // to acc[j] (Real) or to a dropped local (a ghost j, whose accumulator is not kept).
 template <bool Real, bool Lanes, class Eq, class Acc, int D>
-inline void pair_share(const Eq& eq, Acc* acc, Shares<Acc>& shares, std::size_t i, std::size_t j,
-                       std::size_t k, const Pair<D>& g) {
+inline void pair_share(const Eq& eq, Acc* __restrict acc, Shares<Acc>& __restrict shares,
+                       std::size_t i, std::size_t j, std::size_t k, const Pair<D>& g) {
   Acc a_i{};
   if constexpr (Real) {
     eq.pair(a_i, acc[j], i, j, g);
@@ -173,9 +181,9 @@ inline void pair_share(const Eq& eq, Acc* acc, Shares<Acc>& shares, std::size_t 
 // shares.block and are folded after the loop.
 template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
           class ShareTuple, std::size_t... I>
-[[gnu::flatten]] void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
-                                 ShareTuple& shares, std::size_t i, std::size_t cb, std::size_t lo,
-                                 std::size_t ce, std::index_sequence<I...>) {
+FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
+                              ShareTuple& shares, std::size_t i, std::size_t cb, std::size_t lo,
+                              std::size_t ce, std::index_sequence<I...>) {
   const Vec<D>* x = ps.x.data();
   const double* hs = ps.h.data();
   const Vec<D> xi = x[i];
