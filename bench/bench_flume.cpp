@@ -45,6 +45,7 @@ struct Prepared {
                       "fluid.viscosity=0", "output.snapshot_interval=0"});
     phys = build_physics<2>(spec);
     ps = build_particles<2>(spec, phys);
+    ps.use_only(kFieldsAll);  // every group of every scheme runs on this set
     walls.lo = Vec<2>{{spec.domain_min[0], spec.domain_min[1]}};
     walls.hi = Vec<2>{{spec.domain_max[0], spec.domain_max[1]}};
     for (auto& axis : walls.kind)
