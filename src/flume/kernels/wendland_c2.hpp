@@ -37,19 +37,9 @@ struct WendlandC2 {
     return r < support * h ? v : 0.0;
   }
 
-  // dW/dr in 1/m^(D+1): d/dq gives -3 q (1 - q/2)^2 (1D) and -5 q (1 - q/2)^3 (2D, 3D).
-  static double dwdr(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double t = std::max(0.0, 1.0 - 0.5 * q);
-    double v;
-    if constexpr (D == 1) {
-      v = -3.0 * norm * ih * ih * q * t * t;
-    } else {
-      v = -5.0 * norm * inv_hd(ih) * ih * q * t * t * t;
-    }
-    return r < support * h ? v : 0.0;
-  }
+  // dW/dr in 1/m^(D+1): d/dq gives -3 q (1 - q/2)^2 (1D) and -5 q (1 - q/2)^3 (2D, 3D), which is
+  // r times the gradient factor below.
+  static double dwdr(double r, double h) noexcept { return r * gradient_factor(r, h); }
 
   // (1/r) dW/dr in 1/m^(D+2), finite at r = 0, so that grad W = x_ij * gradient_factor needs no
   // division by r: -3 (1 - q/2)^2 / h^2 (1D) and -5 (1 - q/2)^3 / h^2 (2D, 3D) times norm / h^D.
