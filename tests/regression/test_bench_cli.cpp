@@ -13,46 +13,16 @@
 #include <string>
 #include <vector>
 
+#include "support/flume_binary.hpp"
+
 namespace flume {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
+using test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-class BenchCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("flume_bench_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Result flume(const std::string& args) {
-    const std::string cmd = std::string(FLUME_BINARY) + " " + args + " > " +
-                            (dir_ / "stdout").string() + " 2> " + (dir_ / "stderr").string();
-    const int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir_ / "stdout");
-    r.err = slurp(dir_ / "stderr");
-    return r;
-  }
-  fs::path dir_;
-};
+class BenchCli : public test::FlumeBinaryTest {};
 
 TEST_F(BenchCli, TinyRunWritesBenchJson) {
   const auto out = dir_ / "bench";

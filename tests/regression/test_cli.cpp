@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "flume/io/csv_table.hpp"
+#include "support/flume_binary.hpp"
 #include "support/small_cases.hpp"
 
 namespace flume {
@@ -18,41 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
+using Result = test::CliResult;
+using test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public test::FlumeBinaryTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("flume_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Result flume(const std::string& args) { return flume_env("", args); }
-  // `env` prefixes the command, e.g. "NAME=value ".
-  Result flume_env(const std::string& env, const std::string& args) {
-    const std::string cmd = env + std::string(FLUME_BINARY) + " " + args + " > " +
-                            (dir_ / "stdout").string() + " 2> " + (dir_ / "stderr").string();
-    const int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir_ / "stdout");
-    r.err = slurp(dir_ / "stderr");
-    return r;
-  }
   // A run that failed: exit status 1, and `why` both on stderr and in summary.json.
   void expect_failed_run(const Result& r, const fs::path& out, const std::string& why) {
     EXPECT_EQ(r.status, 1);
@@ -66,7 +37,6 @@ class Cli : public ::testing::Test {
     std::ofstream(p) << toml;
     return p;
   }
-  fs::path dir_;
 };
 
 TEST_F(Cli, RunWritesTheRunDirectory) {

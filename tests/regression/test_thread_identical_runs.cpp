@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/flume_binary.hpp"
 #include "support/small_cases.hpp"
 
 namespace flume {
@@ -22,12 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::slurp;
 
 class ThreadIdenticalRuns : public ::testing::TestWithParam<std::string> {
  protected:
