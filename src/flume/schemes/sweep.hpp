@@ -11,6 +11,8 @@
 // their shares. A pair with a ghost j is visited from the real side only, with a scratch aj that
 // is thrown away (ghosts are copies refreshed from their sources). The self pair (i, i) is
 // visited once with r = 0, W = W(0), grad W = 0 and a scratch aj.
+// Vectorisation: the candidates of each run of cells are evaluated in blocks of kLanes without a
+// branch (pair_block), the equations inlined; candidates beyond the support give exact zeros.
 // Threads: the cell layers along the slowest axis are cut into slabs; a pair touches the
 // accumulators of its own layer and the next only, so the even slabs run in parallel, then the
 // odd ones. Every accumulator then receives its terms in an order fixed by the positions alone:
