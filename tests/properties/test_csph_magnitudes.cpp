@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "flume/schemes/registry.hpp"
+#include "support/hand_cases.hpp"
 #include "support/lattice.hpp"
 #include "support/rates.hpp"
 
@@ -30,15 +31,6 @@ Physics<2> fluid(double gamma, double mu) {
 
 std::unique_ptr<Scheme<2>> csph(double gamma, double mu, KernelKind k = KernelKind::wendland_c2) {
   return make_scheme<2>(*preset_rows("csph"), k, fluid(gamma, mu));
-}
-
-// BL (23)-(24) with the 3D deviator: sigma' = 2 mu (d - tr(d)/3 I), d = (G + G^T)/2.
-Mat<2> deviatoric(const Mat<2>& g, double mu) {
-  Mat<2> d = (g + transpose(g)) * 0.5;
-  const double third = (d(0, 0) + d(1, 1)) / 3.0;
-  d(0, 0) -= third;
-  d(1, 1) -= third;
-  return d * (2.0 * mu);
 }
 
 // Every CSPH quantity of a small cloud (one h, Wendland C2), term by term from BL (53)-(59)
@@ -91,7 +83,7 @@ struct CsphReference {
         // BL (59), compression positive: a_a = sum_b m_b / (rho_a rho_b) (p_b I - sigma'_b)
         // L_b grad W~_a(x_b); b = a is part of the sum.
         const double pb = phys.eos.kappa * (std::pow(ps.rho[b] / kRho0, phys.eos.gamma) - 1.0);
-        const Mat<2> stress = Mat<2>::identity() * pb - deviatoric(grad_v[b], phys.mu);
+        const Mat<2> stress = Mat<2>::identity() * pb - test::deviatoric(grad_v[b], phys.mu);
         acc += stress * (L[b] * gt(b, a)) * (ps.m[b] / (ps.rho[a] * ps.rho[b]));
       }
       drho.push_back(-ps.rho[a] * div);
@@ -99,17 +91,6 @@ struct CsphReference {
     }
   }
 };
-
-// Three particles within 2h, unequal masses, densities and velocities: every M_a is degenerate
-// (det ~ 0.1), so L = I.
-ParticleSet<2> triangle() {
-  ParticleSet<2> ps;
-  const double h = 0.013;
-  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.3, -0.1}}, 0.10, 1010.0, h);
-  ps.add_real(1, Vec<2>{{0.011, 0.002}}, Vec<2>{{-0.2, 0.4}}, 0.12, 995.0, h);
-  ps.add_real(2, Vec<2>{{0.004, 0.012}}, Vec<2>{{0.1, 0.25}}, 0.09, 1003.0, h);
-  return ps;
-}
 
 // A 3 x 3 patch, spacing 1 cm, each site moved by < 1 mm, h = 1.05 cm: the centre's M is well
 // conditioned (det 0.90), the edges' are too (0.38-0.42), the corners' are not (0.17-0.22), so
@@ -157,10 +138,10 @@ void check_against_reference(ParticleSet<2> ps, double h, double mu) {
 }
 
 TEST(CsphMagnitude, ShepardGammaGradientAndForceOfThreeParticlesByHand) {
-  check_against_reference(triangle(), 0.013, 0.0);
+  check_against_reference(test::triangle(0.013), 0.013, 0.0);  // every M_a degenerate: L = I
   // Hand values for the record, from the Wendland C2 formula (python, independent of flume):
   // S = 0.50106, 0.55864, 0.45323; gamma_0 = (57.271, 37.068) 1/m.
-  auto ps = triangle();
+  auto ps = test::triangle(0.013);
   test::compute_rates(*csph(7.0, 0.0), ps);
   EXPECT_NEAR(ps.shepard[0], 0.5010559773985, 1e-12);
   EXPECT_NEAR(ps.shepard[1], 0.5586407223905, 1e-12);
@@ -170,7 +151,7 @@ TEST(CsphMagnitude, ShepardGammaGradientAndForceOfThreeParticlesByHand) {
 }
 
 TEST(CsphMagnitude, ViscousForceOfThreeParticlesByHand) {
-  check_against_reference(triangle(), 0.013, 0.5);
+  check_against_reference(test::triangle(0.013), 0.013, 0.5);
 }
 
 TEST(CsphMagnitude, IrregularPatchWithBothBranchesOfLByHand) {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "flume/schemes/registry.hpp"
+#include "support/hand_cases.hpp"
 #include "support/lattice.hpp"
 #include "support/rates.hpp"
 
@@ -28,22 +29,13 @@ std::unique_ptr<Scheme<2>> scheme(const std::string& preset, KernelKind kernel) 
   return make_scheme<2>(*preset_rows(preset), kernel, water());
 }
 
-// Three particles within 2h of each other, unequal masses and densities (Wendland C2, h = 1.3 cm).
-ParticleSet<2> triangle() {
-  ParticleSet<2> ps;
-  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.3, -0.1}}, 0.10, 1010.0, kH);
-  ps.add_real(1, Vec<2>{{0.011, 0.002}}, Vec<2>{{-0.2, 0.4}}, 0.12, 995.0, kH);
-  ps.add_real(2, Vec<2>{{0.004, 0.012}}, Vec<2>{{0.1, 0.25}}, 0.09, 1003.0, kH);
-  return ps;
-}
-
 // A sum of n terms of size `scale`, each exact to half an ulp, carries at most ~n ulp of `scale`:
 // for these 3-term sums 1e-14 relative to the largest term's size is far above round-off and far
 // below any wrong factor, weight or missing term.
 constexpr double kHandTol = 1e-14;
 
 TEST(DensityMagnitude, SummationBL1ByHandIncludesTheSelfTerm) {
-  auto ps = triangle();
+  auto ps = test::triangle(kH);
   // Unequal smoothing lengths too: a pair uses h_ab = (h_a + h_b)/2 (W, text after (3.46)).
   ps.h[2] = 1.1 * kH;
   const auto before = ps;
@@ -92,7 +84,7 @@ INSTANTIATE_TEST_SUITE_P(Kernels, SummationLattice, ::testing::ValuesIn(kernel_k
                          [](const auto& p) { return std::string(kernel_name(p.param)); });
 
 TEST(DensityMagnitude, ContinuityBL4ByHand) {
-  auto ps = triangle();
+  auto ps = test::triangle(kH);
   const auto before = ps;
   test::compute_rates(*scheme("continuity", KernelKind::wendland_c2), ps);
   // BL (4): d rho_a/dt = -rho_a sum_b (m_b / rho_b) (v_b - v_a) . grad W_b(x_a); b = a adds 0.
@@ -186,7 +178,7 @@ TEST(DensityMagnitude, CsphContinuityOfALinearFieldIsExactOnAJitteredCloud) {
 }
 
 TEST(DensityMagnitude, ShepardFilterW63ByHand) {
-  auto ps = triangle();
+  auto ps = test::triangle(kH);
   const auto before = ps;
   test::filter_density(*scheme("continuity", KernelKind::wendland_c2), ps);
   // W (6.3): rho_a <- sum_b m_b W_ab / sum_b (m_b / rho_b) W_ab, self term included.

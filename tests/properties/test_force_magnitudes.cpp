@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "flume/schemes/registry.hpp"
+#include "support/hand_cases.hpp"
 #include "support/lattice.hpp"
 #include "support/rates.hpp"
 
@@ -31,15 +32,6 @@ double tait(const Physics<2>& phys, double rho) {
   return phys.eos.kappa * (std::pow(rho / phys.eos.rho0, phys.eos.gamma) - 1.0);  // BL (60)
 }
 
-// Three particles within 2h of each other, unequal masses and densities (Wendland C2).
-ParticleSet<2> triangle() {
-  ParticleSet<2> ps;
-  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.3, -0.1}}, 0.10, 1010.0, kH);
-  ps.add_real(1, Vec<2>{{0.011, 0.002}}, Vec<2>{{-0.2, 0.4}}, 0.12, 995.0, kH);
-  ps.add_real(2, Vec<2>{{0.004, 0.012}}, Vec<2>{{0.1, 0.25}}, 0.09, 1003.0, kH);
-  return ps;
-}
-
 Vec<2> grad(const ParticleSet<2>& ps, std::size_t a, std::size_t b) {
   return test::wendland_grad(ps.x[a], ps.x[b], kH);  // grad_a W_ab
 }
@@ -58,7 +50,7 @@ TEST(ForceMagnitude, SummationDensityForcesBL7AndBL20ByHand) {
   // compression, (rho/rho0)^7 ~ 2-5.
   const auto phys = fluid(500.0, 7.0, 1e4);
   for (const std::string preset : {"standard", "inconsistent"}) {
-    auto ps = triangle();
+    auto ps = test::triangle(kH);
     const auto x = ps;
     test::compute_rates(*make_scheme<2>(*preset_rows(preset), KernelKind::wendland_c2, phys), ps);
     double rho[3], p[3];
@@ -85,7 +77,7 @@ TEST(ForceMagnitude, SummationDensityForcesBL7AndBL20ByHand) {
 
 TEST(ForceMagnitude, ContinuityForceBL20ByHand) {
   const auto phys = fluid(1000.0, 7.0, 1e5);
-  auto ps = triangle();
+  auto ps = test::triangle(kH);
   const auto x = ps;
   test::compute_rates(*make_scheme<2>(*preset_rows("continuity"), KernelKind::wendland_c2, phys),
                       ps);

@@ -12,6 +12,7 @@
 #include "flume/schemes/registry.hpp"
 #include "flume/sim/diagnostics.hpp"
 #include "flume/sim/simulation.hpp"
+#include "support/hand_cases.hpp"
 #include "support/lattice.hpp"
 #include "support/rates.hpp"
 #include "support/small_cases.hpp"
@@ -161,15 +162,6 @@ TEST(ArtificialViscosity, KineticEnergyLossMatchesThePairDissipation) {
 
 // ---- Physical viscosity BL (22)-(24) ----
 
-// sigma' = 2 mu (d - tr(d)/3 I), d = (G + G^T) / 2 (BL (23)-(24), the 3D deviator in 2D).
-Mat<2> deviatoric(const Mat<2>& g, double mu) {
-  Mat<2> d = (g + transpose(g)) * 0.5;
-  const double third = (d(0, 0) + d(1, 1)) / 3.0;
-  d(0, 0) -= third;
-  d(1, 1) -= third;
-  return d * (2.0 * mu);
-}
-
 TEST(PhysicalViscosity, PairByHand) {
   const double mu = 0.8;
   auto ps = approaching_pair();
@@ -186,7 +178,7 @@ TEST(PhysicalViscosity, PairByHand) {
         EXPECT_NEAR(ps.grad_v[a](k, l), G[a](k, l), 1e-13 * 100.0) << a;  // |grad v| ~ 100 1/s
     // BL (24) (V_a V_b, erratum 3), compression positive (erratum 1): a_a += m_b / (rho_a
     // rho_b) (sigma'_a + sigma'_b) grad_a W_ab, next to the pressure force BL (20).
-    const Vec<2> visc = (deviatoric(G[a], mu) + deviatoric(G[b], mu)) *
+    const Vec<2> visc = (test::deviatoric(G[a], mu) + test::deviatoric(G[b], mu)) *
                         test::wendland_grad(x.x[a], x.x[b], kH) * (x.m[b] / (x.rho[a] * x.rho[b]));
     const Vec<2> want = pressure_part(x, a, b) + visc;
     const double tol = 1e-12 * (norm(pressure_part(x, a, b)) + norm(visc));
