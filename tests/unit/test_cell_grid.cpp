@@ -275,8 +275,12 @@ TEST(CellGrid, EscapedParticleThrowsInsteadOfAllocating) {
   EXPECT_THROW(grid.sort_real(std::span<const Vec<3>>(x), 0.1), SimulationError);
 }
 
-TEST(CellGrid, SortIsAStablePermutationByCell) {
-  const auto x = uniform_cloud<2>(500, 0.0, 1.0, 93);
+// The order the sweeps rely on: by cell, and within a cell by x (ties by index), so that each
+// row of cells is sorted by x; the same for the ghosts.
+TEST(CellGrid, SortIsAPermutationByCellThenX) {
+  auto x = uniform_cloud<2>(500, 0.0, 1.0, 93);
+  for (std::size_t k = 0; k < 40; ++k)
+    x[k + 40][0] = x[k][0];  // equal x-coordinates: their order is by index
   CellGrid<2> grid;
   const auto order = grid.sort_real(std::span<const Vec<2>>(x), 0.1);
   std::vector<std::uint32_t> seen(order.begin(), order.end());
@@ -286,9 +290,28 @@ TEST(CellGrid, SortIsAStablePermutationByCell) {
   for (std::size_t k = 1; k < order.size(); ++k) {
     ASSERT_LE(grid.cell_of_real(k - 1), grid.cell_of_real(k));
     if (grid.cell_of_real(k - 1) == grid.cell_of_real(k)) {
-      ASSERT_LT(order[k - 1], order[k]);
+      const double xa = x[order[k - 1]][0], xb = x[order[k]][0];
+      ASSERT_TRUE(xa < xb || (xa == xb && order[k - 1] < order[k])) << k;
     }
   }
+  // A row of cells along x is one run sorted by x.
+  const std::size_t row = 5 * grid.strides()[1];
+  for (std::uint32_t k = grid.real_begin(row) + 1; k < grid.real_begin(row + grid.dims()[0]); ++k)
+    ASSERT_LE(x[order[k - 1]][0], x[order[k]][0]);
+}
+
+TEST(CellGrid, GhostsAreSortedByCellThenX) {
+  const auto x = uniform_cloud<2>(300, 0.0, 1.0, 94);
+  const auto gx = uniform_cloud<2>(200, -0.2, 1.2, 95);
+  CellGrid<2> grid;
+  grid.sort_real(std::span<const Vec<2>>(x), 0.1);
+  const auto order = grid.sort_ghosts(std::span<const Vec<2>>(gx));
+  std::vector<Vec<2>> sorted(gx.size());
+  for (std::size_t k = 0; k < gx.size(); ++k)
+    sorted[k] = gx[order[k]];
+  for (std::size_t c = 0; c < grid.cells(); ++c)
+    for (std::uint32_t k = grid.ghost_begin(c) + 1; k < grid.ghost_begin(c + 1); ++k)
+      ASSERT_LE(sorted[k - x.size() - 1][0], sorted[k - x.size()][0]) << c;
 }
 
 }  // namespace

@@ -2,19 +2,32 @@
 //   a_a = g + sum of the pair terms (pressure force, physical and artificial viscosity).
 // Every term gives the pair (i, j) its acceleration shares; here they share one accumulator per
 // particle, added to ps.a once at the end, instead of one accumulator (and one finish) per term.
-// Each term keeps its own file, formula and finish (ps.a[i] += a) for use on its own.
+// Each term keeps its own file, formula and finish (ps.a[i] += a) for use on its own. The terms'
+// per-particle factors (own.hpp), if any, travel together as one tuple.
 #pragma once
 
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "flume/core/particle_set.hpp"
+#include "flume/equations/own.hpp"
 #include "flume/equations/pair.hpp"
 
 namespace flume {
 
+namespace detail {
+template <bool Any, class Owns>
+struct OwnDeclaration {};
+template <class Owns>
+struct OwnDeclaration<true, Owns> {
+  using Own = Owns;
+};
+}  // namespace detail
+
 template <int D, class... Terms>
-struct AccelerationSum {
+struct AccelerationSum
+    : detail::OwnDeclaration<(HasOwn<Terms> || ...), std::tuple<OwnOf<Terms>...>> {
   static_assert((std::is_same_v<typename Terms::Acc, Vec<D>> && ...),
                 "every term of the momentum equation accumulates an acceleration");
   using Acc = Vec<D>;
@@ -24,8 +37,25 @@ struct AccelerationSum {
   AccelerationSum(ParticleSet<D>& particles, const Terms&... t) : ps(particles), terms(t...) {}
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    std::apply([&](const auto&... t) { (t.pair(a_i, a_j, i, j, g), ...); }, terms);
+  auto own(std::size_t b) const requires(HasOwn<Terms> || ...) {
+    return std::apply([&](const auto&... t) { return std::tuple{own_of(t, b)...}; }, terms);
+  }
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const
+      requires(!(HasOwn<Terms> || ...)) {
+    pair(a_i, a_j, std::tuple<OwnOf<Terms>...>{}, std::tuple<OwnOf<Terms>...>{}, i, j, g);
+  }
+  // The terms add to local sums, and each accumulator is written once: a write to a_j between
+  // two terms would make the compiler reload everything the next term reads of the particles.
+  void pair(Acc& a_i, Acc& a_j, const std::tuple<OwnOf<Terms>...>& o_i,
+            const std::tuple<OwnOf<Terms>...>& o_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
+    Acc sum_i{}, sum_j{};
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (pair_of(std::get<K>(terms), sum_i, sum_j, std::get<K>(o_i), std::get<K>(o_j), i, j, g), ...);
+    }
+    (std::index_sequence_for<Terms...>{});
+    a_i += sum_i;
+    a_j += sum_j;
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

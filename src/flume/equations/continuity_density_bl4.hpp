@@ -14,14 +14,17 @@ namespace flume {
 template <int D>
 struct ContinuityDensityBL4 {
   using Acc = double;  // sum_b V_b (v_b - v_a) . grad W_b(x_a), the divergence of v at a
+  using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
   const std::vector<Vec<D>>& vel;
 
   Acc init(std::size_t) const { return 0.0; }
-  void pair(Acc& div_i, Acc& div_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  Own own(std::size_t b) const { return ps.m[b] / ps.rho[b]; }
+  void pair(Acc& div_i, Acc& div_j, Own vol_i, Own vol_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
     const double dv_gradw = dot(vel[j] - vel[i], g.gradw);
-    div_i += ps.m[j] / ps.rho[j] * dv_gradw;
-    div_j += ps.m[i] / ps.rho[i] * dv_gradw;
+    div_i += vol_j * dv_gradw;
+    div_j += vol_i * dv_gradw;
   }
   void finish(Acc& div, std::size_t i) const { ps.drho[i] = -ps.rho[i] * div; }
 };

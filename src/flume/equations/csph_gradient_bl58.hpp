@@ -28,16 +28,19 @@ struct CsphGradientBL58 {
     Mat<D> grad;    // sum_b V_b (v_b - v_a) (x) grad W~_b(x_a)
     Mat<D> moment;  // M_a
   };
+  using Own = CorrectionFactors<D>;  // V_b, 1/S_b, gamma_b/S_b, once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
+  Own own(std::size_t b) const { return correction_factors(ps, b); }
   // a = i sees grad W_j(x_i) = gradw, b = j sees grad W_i(x_j) = -gradw; each corrects it with
   // its own S and gamma.
-  void pair(Acc& acc_i, Acc& acc_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  void pair(Acc& acc_i, Acc& acc_j, const Own& o_i, const Own& o_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
     const Vec<D> dv = ps.v[j] - ps.v[i];
-    const Vec<D> gw_i = corrected_kernel_gradient(ps, i, g.gradw, g.w);
-    const Vec<D> gw_j = corrected_kernel_gradient(ps, j, -g.gradw, g.w);
-    const double vol_j = ps.m[j] / ps.rho[j], vol_i = ps.m[i] / ps.rho[i];
+    const Vec<D> gw_i = o_i.corrected(g.gradw, g.w);
+    const Vec<D> gw_j = o_j.corrected(-g.gradw, g.w);
+    const double vol_j = o_j.vol, vol_i = o_i.vol;
     acc_i.grad += outer(dv, gw_i) * vol_j;
     acc_i.moment += outer(-g.xij, gw_i) * vol_j;
     acc_j.grad += outer(-dv, gw_j) * vol_i;
@@ -60,16 +63,28 @@ struct CsphGradientBL58 {
 template <int D>
 struct CsphContinuity {
   using Acc = double;
+  // Per particle b (own.hpp): K_b = L_b / S_b, k_b = K_b gamma_b and V_b, so that
+  // L_b grad W~ = K_b grad W - k_b W.
+  struct Own {
+    Mat<D> K;
+    Vec<D> k;
+    double vol;
+  };
   ParticleSet<D>& ps;
   const std::vector<Vec<D>>& vel;
 
   Acc init(std::size_t) const { return 0.0; }
-  void pair(Acc& div_i, Acc& div_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  Own own(std::size_t b) const {
+    const Mat<D> K = ps.L[b] * (1.0 / ps.shepard[b]);
+    return {K, K * ps.gamma[b], ps.m[b] / ps.rho[b]};
+  }
+  void pair(Acc& div_i, Acc& div_j, const Own& o_i, const Own& o_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
     const Vec<D> dv = vel[j] - vel[i];
-    const Vec<D> gw_i = ps.L[i] * corrected_kernel_gradient(ps, i, g.gradw, g.w);
-    const Vec<D> gw_j = ps.L[j] * corrected_kernel_gradient(ps, j, -g.gradw, g.w);
-    div_i += ps.m[j] / ps.rho[j] * dot(dv, gw_i);
-    div_j -= ps.m[i] / ps.rho[i] * dot(dv, gw_j);
+    const Vec<D> gw_i = o_i.K * g.gradw - o_i.k * g.w;
+    const Vec<D> gw_j = o_j.K * (-g.gradw) - o_j.k * g.w;
+    div_i += o_j.vol * dot(dv, gw_i);
+    div_j -= o_i.vol * dot(dv, gw_j);
   }
   void finish(Acc& div, std::size_t i) const { ps.drho[i] = -ps.rho[i] * div; }
 };

@@ -15,11 +15,14 @@ namespace flume {
 template <int D>
 struct ForceBonetLok20 {
   using Acc = Vec<D>;
+  using Own = double;  // 1 / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    const Vec<D> f = g.gradw * ((ps.p[i] + ps.p[j]) / (ps.rho[i] * ps.rho[j]));
+  Own own(std::size_t b) const { return 1.0 / ps.rho[b]; }
+  void pair(Acc& a_i, Acc& a_j, Own inv_rho_i, Own inv_rho_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
+    const Vec<D> f = g.gradw * ((ps.p[i] + ps.p[j]) * (inv_rho_i * inv_rho_j));
     a_i -= f * ps.m[j];
     a_j += f * ps.m[i];
   }

@@ -15,12 +15,14 @@ namespace flume {
 template <int D>
 struct ForceBonetLok7 {
   using Acc = Vec<D>;
+  using Own = double;  // p_b / rho_b^2, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    const double ri = ps.rho[i], rj = ps.rho[j];
-    const Vec<D> f = g.gradw * (ps.p[i] / (ri * ri) + ps.p[j] / (rj * rj));
+  Own own(std::size_t b) const { return ps.p[b] / (ps.rho[b] * ps.rho[b]); }
+  void pair(Acc& a_i, Acc& a_j, Own p_rho2_i, Own p_rho2_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
+    const Vec<D> f = g.gradw * (p_rho2_i + p_rho2_j);
     a_i -= f * ps.m[j];
     a_j += f * ps.m[i];
   }

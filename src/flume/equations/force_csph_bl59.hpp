@@ -6,6 +6,9 @@
 // In the pair loop of a = i, b = j: grad W_a(x_b) = -grad_i W_ij and W_a(x_b) = W_ij. The self
 // term (b = a) is not zero here (W(0) gamma_a) and is part of the sum. Linear momentum is kept
 // because sum_a V_a grad W~_a(x_b) = 0; angular momentum because L_b satisfies BL (41).
+// Per particle b (own.hpp): B_b = (p_b I - sigma'_b) L_b / S_b and c_b = B_b gamma_b, so that
+// (p_b I - sigma'_b) L_b grad W~ = B_b grad W - c_b W: a pair costs two matrix-vector products
+// and no division.
 #pragma once
 
 #include "flume/core/particle_set.hpp"
@@ -18,18 +21,27 @@ namespace flume {
 template <int D>
 struct ForceCsphBL59 {
   using Acc = Vec<D>;
+  struct Own {
+    Mat<D> B;        // (p_b I - sigma'_b) L_b / S_b
+    Vec<D> c;        // B_b gamma_b
+    double inv_rho;  // 1 / rho_b
+  };
   ParticleSet<D>& ps;
   double mu;  // dynamic viscosity, Pa s; when > 0, ps.stress holds sigma' (BL (23)-(24))
 
   Acc init(std::size_t) const { return {}; }
-  // Particle a = i gets b = j's term with grad W~_i(x_j) (j's S, gamma, L) and vice versa; the
-  // two terms are not opposite, but their sum over all pairs is zero (see above).
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    const double inv_rr = 1.0 / (ps.rho[i] * ps.rho[j]);
-    a_i += (total_stress(j) * (ps.L[j] * corrected_kernel_gradient(ps, j, -g.gradw, g.w))) *
-           (ps.m[j] * inv_rr);
-    a_j += (total_stress(i) * (ps.L[i] * corrected_kernel_gradient(ps, i, g.gradw, g.w))) *
-           (ps.m[i] * inv_rr);
+  Own own(std::size_t b) const {
+    const Mat<D> B = total_stress(b) * ps.L[b] * (1.0 / ps.shepard[b]);
+    return {B, B * ps.gamma[b], 1.0 / ps.rho[b]};
+  }
+  // Particle a = i gets b = j's term with grad W~_i(x_j) = (-grad W - gamma_j W) / S_j (j's S,
+  // gamma, L) and vice versa; the two terms are not opposite, but their sum over all pairs is
+  // zero (see above).
+  void pair(Acc& a_i, Acc& a_j, const Own& o_i, const Own& o_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
+    const double inv_rr = o_i.inv_rho * o_j.inv_rho;
+    a_i -= (o_j.B * g.gradw + o_j.c * g.w) * (ps.m[j] * inv_rr);
+    a_j += (o_i.B * g.gradw - o_i.c * g.w) * (ps.m[i] * inv_rr);
   }
   // p_b I - sigma'_b (compression positive).
   Mat<D> total_stress(std::size_t b) const {

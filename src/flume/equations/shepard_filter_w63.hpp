@@ -17,15 +17,18 @@ namespace flume {
 template <int D>
 struct ShepardFilterW63 {
   using Acc = std::array<double, 2>;  // sum m_j W_ij, sum (m_j / rho_j) W_ij
+  using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   const ParticleSet<D>& ps;
   std::vector<double>& out;
 
   Acc init(std::size_t) const { return {0.0, 0.0}; }
-  void pair(Acc& s_i, Acc& s_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  Own own(std::size_t b) const { return ps.m[b] / ps.rho[b]; }
+  void pair(Acc& s_i, Acc& s_j, Own vol_i, Own vol_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
     s_i[0] += ps.m[j] * g.w;
-    s_i[1] += ps.m[j] / ps.rho[j] * g.w;
+    s_i[1] += vol_j * g.w;
     s_j[0] += ps.m[i] * g.w;
-    s_j[1] += ps.m[i] / ps.rho[i] * g.w;
+    s_j[1] += vol_i * g.w;
   }
   void finish(Acc& s, std::size_t i) const { out[i] = s[0] / s[1]; }
 };

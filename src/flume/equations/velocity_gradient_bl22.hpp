@@ -12,13 +12,16 @@ namespace flume {
 template <int D>
 struct VelocityGradientBL22 {
   using Acc = Mat<D>;
+  using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& G_i, Acc& G_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  Own own(std::size_t b) const { return ps.m[b] / ps.rho[b]; }
+  void pair(Acc& G_i, Acc& G_j, Own vol_i, Own vol_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
     const Mat<D> dv_gradw = outer(ps.v[j] - ps.v[i], g.gradw);
-    G_i += dv_gradw * (ps.m[j] / ps.rho[j]);
-    G_j += dv_gradw * (ps.m[i] / ps.rho[i]);
+    G_i += dv_gradw * vol_j;
+    G_j += dv_gradw * vol_i;
   }
   void finish(Acc& G, std::size_t i) const { ps.grad_v[i] = G; }
 };

@@ -38,11 +38,14 @@ void update_deviatoric_stress(ParticleSet<D>& ps, double mu) {
 template <int D>
 struct ViscosityBonetLok24 {
   using Acc = Vec<D>;
+  using Own = double;  // 1 / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
-    const Vec<D> f = ((ps.stress[i] + ps.stress[j]) * g.gradw) * (1.0 / (ps.rho[i] * ps.rho[j]));
+  Own own(std::size_t b) const { return 1.0 / ps.rho[b]; }
+  void pair(Acc& a_i, Acc& a_j, Own inv_rho_i, Own inv_rho_j, std::size_t i, std::size_t j,
+            const Pair<D>& g) const {
+    const Vec<D> f = ((ps.stress[i] + ps.stress[j]) * g.gradw) * (inv_rho_i * inv_rho_j);
     a_i += f * ps.m[j];
     a_j -= f * ps.m[i];
   }

@@ -51,6 +51,30 @@ void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uin
   start[0] = offset;
 }
 
+// Sorts each cell's run of `order` (particle k of cell c is order[start[c] - offset + k]) by the
+// x-coordinate, ties by index: cells are contiguous along x, so each row of cells is then sorted
+// by x. An insertion sort: from one step to the next the runs are already nearly sorted.
+template <int D>
+void sort_cells_by_x(std::span<const Vec<D>> x, const std::vector<std::uint32_t>& start,
+                     std::uint32_t offset, std::vector<std::uint32_t>& order) {
+  const auto cells = static_cast<long>(start.size()) - 1;
+  auto before = [&](std::uint32_t a, std::uint32_t b) {
+    return x[a][0] < x[b][0] || (x[a][0] == x[b][0] && a < b);
+  };
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < cells; ++c) {
+    const std::size_t b = start[static_cast<std::size_t>(c)] - offset;
+    const std::size_t e = start[static_cast<std::size_t>(c) + 1] - offset;
+    for (std::size_t k = b + 1; k < e; ++k) {
+      const std::uint32_t v = order[k];
+      std::size_t m = k;
+      for (; m > b && before(v, order[m - 1]); --m)
+        order[m] = order[m - 1];
+      order[m] = v;
+    }
+  }
+}
+
 template <int D>
 const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>> x, double range) {
   if (!(range > 0.0)) throw SimulationError("cell grid: range must be positive");
@@ -102,6 +126,7 @@ const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>>
     real_cell_[static_cast<std::size_t>(i)] =
         static_cast<std::uint32_t>(cell_of(x[static_cast<std::size_t>(i)]));
   counting_sort(real_cell_, 0, real_start_, order_);
+  sort_cells_by_x(x, real_start_, 0, order_);
   // The cells in the sorted order (a counting sort leaves them ascending).
   for (std::size_t c = 0; c < cell_count_; ++c)
     for (std::uint32_t k = real_start_[c]; k < real_start_[c + 1]; ++k)
@@ -118,6 +143,7 @@ const std::vector<std::uint32_t>& CellGrid<D>::sort_ghosts(std::span<const Vec<D
     ghost_cell_[static_cast<std::size_t>(g)] =
         static_cast<std::uint32_t>(cell_of(ghost_x[static_cast<std::size_t>(g)]));
   counting_sort(ghost_cell_, static_cast<std::uint32_t>(n_real_), ghost_start_, order_);
+  sort_cells_by_x(ghost_x, ghost_start_, static_cast<std::uint32_t>(n_real_), order_);
   return order_;
 }
 

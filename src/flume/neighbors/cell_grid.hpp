@@ -3,7 +3,9 @@
 // three neighbouring cells along x, are one contiguous run of indices. Real particles are sorted
 // every step (a stable counting sort, so the order depends only on the positions, never on the
 // thread count); ghost copies are binned into the same cells in a run of their own after the
-// real particles. No neighbour list is stored: a sweep visits the cell runs directly.
+// real particles. Within a cell the particles are sorted by x (ties by index), so each row of
+// cells is sorted by x and a sweep can cut a row's run down to the particles within one range
+// of a given x by bisection. No neighbour list is stored: a sweep visits the runs directly.
 // Cell index: x fastest, then y, then z. The grid has kPad empty layers of cells around the real
 // particles' bounding box, so ghosts (at most two ranges beyond it) fall inside and a stencil of
 // one cell around a real particle's cell never leaves the grid.

@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "flume/core/particle_set.hpp"
+#include "flume/equations/own.hpp"
 #include "flume/equations/pair.hpp"
 #include "flume/neighbors/cell_grid.hpp"
 #include "flume/schemes/sweep_workspace.hpp"
@@ -67,6 +68,20 @@ constexpr std::size_t same_type_slot() {
   return n;
 }
 
+// The buffer of an equation's per-particle factors (own.hpp): a type of its own, so that it never
+// shares a workspace buffer with an accumulator of the same type.
+template <class O>
+struct OwnCell {
+  O value;
+};
+template <class O>
+O own_at(const OwnCell<O>* own, std::size_t b) {
+  if constexpr (std::is_same_v<O, NoOwn>)
+    return NoOwn{};
+  else
+    return own[b].value;
+}
+
 constexpr int kSlabLayers = 2;  // cell layers per slab (>= 1: a pair reaches one layer ahead)
 
 // 3^(D-1) cell-row centres around a cell, as offsets (the row along x is [centre-1, centre+1]);
@@ -103,6 +118,19 @@ struct RowOffsets {
     }
   }
 };
+
+// The first index k in [b, e) with x[k][0] >= v (Strict: > v), the run being sorted by x.
+template <int D, bool Strict>
+std::size_t bisect_x(const Vec<D>* x, std::size_t b, std::size_t e, double v) {
+  while (b < e) {
+    const std::size_t mid = b + (e - b) / 2;
+    if (Strict ? x[mid][0] <= v : x[mid][0] < v)
+      b = mid + 1;
+    else
+      e = mid;
+  }
+  return b;
+}
 
 constexpr std::size_t kChunk = 64;  // candidates evaluated in one vectorised block
 constexpr std::size_t kLanes = 8;   // partial sums of i's share: term k goes to sum k % kLanes
@@ -146,27 +174,31 @@ struct Shares {
         partial[d][l] += block[d][k0 + l];
     }
   }
-  // a + the partial sums in lane order (an order fixed by the positions alone).
+  // a + the partial sums, added pairwise in a fixed tree (an order fixed by the positions
+  // alone; a tree rather than a chain, whose latency would stall every particle's end).
   Acc total(const Acc& a) const {
+    static_assert(kLanes == 8);
     auto sum = std::bit_cast<Flat>(a);
-    for (std::size_t l = 0; l < kLanes; ++l)
-      for (std::size_t d = 0; d < kDoubles; ++d)
-        sum[d] += partial[d][l];
+    for (std::size_t d = 0; d < kDoubles; ++d) {
+      const double* p = partial[d];
+      sum[d] += ((p[0] + p[4]) + (p[2] + p[6])) + ((p[1] + p[5]) + (p[3] + p[7]));
+    }
     return std::bit_cast<Acc>(sum);
   }
 };
 
 // Pair (i, j) of a block: i's share goes to partial sum k (Lanes) or to shares.block[k], j's
 // to acc[j] (Real) or to a dropped local (a ghost j, whose accumulator is not kept).
-template <bool Real, bool Lanes, class Eq, class Acc, int D>
-inline void pair_share(const Eq& eq, Acc* __restrict acc, Shares<Acc>& __restrict shares,
-                       std::size_t i, std::size_t j, std::size_t k, const Pair<D>& g) {
+template <bool Real, bool Lanes, class Eq, class Acc, class O, int D>
+inline void pair_share(const Eq& eq, Acc* __restrict acc, const OwnCell<O>* own,
+                       Shares<Acc>& __restrict shares, std::size_t i, std::size_t j, std::size_t k,
+                       const Pair<D>& g) {
   Acc a_i{};
   if constexpr (Real) {
-    eq.pair(a_i, acc[j], i, j, g);
+    pair_of(eq, a_i, acc[j], own_at(own, i), own_at(own, j), i, j, g);
   } else {
     Acc dropped{};
-    eq.pair(a_i, dropped, i, j, g);
+    pair_of(eq, a_i, dropped, own_at(own, i), own_at(own, j), i, j, g);
   }
   if constexpr (Lanes)
     shares.add_lane(k, a_i);
@@ -182,10 +214,11 @@ inline void pair_share(const Eq& eq, Acc* __restrict acc, Shares<Acc>& __restric
 // of each group adding i's share to partial sum l directly; otherwise the shares go through
 // shares.block and are folded after the loop.
 template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
-          class ShareTuple, std::size_t... I>
+          class OwnTuple, class ShareTuple, std::size_t... I>
 FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
-                              ShareTuple& shares, std::size_t i, std::size_t cb, std::size_t lo,
-                              std::size_t ce, std::index_sequence<I...>) {
+                              const OwnTuple& own, ShareTuple& shares, std::size_t i,
+                              std::size_t cb, std::size_t lo, std::size_t ce,
+                              std::index_sequence<I...>) {
   const Vec<D>* x = ps.x.data();
   const double* hs = ps.h.data();
   const Vec<D> xi = x[i];
@@ -210,7 +243,8 @@ FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
     g.w = in ? w : 0.0;
     g.gradw = g.xij * (in ? factor : 0.0);
     g.in = in ? 1.0 : 0.0;
-    (pair_share<Real, Lanes>(std::get<I>(eqs), std::get<I>(acc), std::get<I>(shares), i, j, k, g),
+    (pair_share<Real, Lanes>(std::get<I>(eqs), std::get<I>(acc), std::get<I>(own),
+                             std::get<I>(shares), i, j, k, g),
      ...);
   };
   if constexpr (Lanes) {
@@ -228,9 +262,10 @@ FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
   }
 }
 
-template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, std::size_t... I>
+template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, class OwnTuple,
+          std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
-                 std::index_sequence<I...>) {
+                 const OwnTuple& own, std::index_sequence<I...>) {
   using Accs = std::tuple<std::remove_pointer_t<std::tuple_element_t<I, AccTuple>>...>;
   const CellGrid<D>& grid = ctx.grid;
   const std::size_t layer = grid.strides()[D - 1];
@@ -240,6 +275,8 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
   const double h0 = ctx.uniform_h;
   const double w0 = UniformH ? Kernel::w(0.0, h0) : 0.0;  // W(0) of the self pair
   const auto* hs = ps.h.data();
+  const Vec<D>* x = ps.x.data();
+  const double range = grid.range();
 
   // Per thread: i's shares of the pairs of a block, and their partial sums.
   std::tuple<Shares<std::tuple_element_t<I, Accs>>...> shares;
@@ -259,10 +296,11 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
       const std::size_t n = ce - cb;
       const std::size_t widened = (n + kLanes - 1) / kLanes * kLanes;
       if (ce >= floor + widened)
-        pair_block<D, Kernel, UniformH, kReal, true>(ps, h0, eqs, acc, shares, i, ce - widened, cb,
-                                                     ce, seq);
+        pair_block<D, Kernel, UniformH, kReal, true>(ps, h0, eqs, acc, own, shares, i, ce - widened,
+                                                     cb, ce, seq);
       else
-        pair_block<D, Kernel, UniformH, kReal, false>(ps, h0, eqs, acc, shares, i, cb, cb, ce, seq);
+        pair_block<D, Kernel, UniformH, kReal, false>(ps, h0, eqs, acc, own, shares, i, cb, cb, ce,
+                                                      seq);
     }
   };
 
@@ -285,19 +323,31 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
             Pair<D> g0;
             g0.h = hs[i];
             g0.w = UniformH ? w0 : Kernel::w(0.0, hs[i]);
-            (std::get<I>(eqs).pair(std::get<I>(ai), std::get<I>(scratch), i, i, g0), ...);
+            (pair_of(std::get<I>(eqs), std::get<I>(ai), std::get<I>(scratch),
+                     own_at(std::get<I>(own), i), own_at(std::get<I>(own), i), i, i, g0),
+             ...);
           }
+          // Each run of three cells along x is sorted by x (CellGrid): only its particles
+          // with x within one range of x_i can interact with i, found by bisection.
+          const double x_lo = x[i][0] - range, x_hi = x[i][0] + range;
+          auto window = [&](std::size_t jb, std::size_t je) {
+            return std::pair{bisect_x<D, false>(x, jb, je, x_lo),
+                             bisect_x<D, true>(x, jb, je, x_hi)};
+          };
           // The rest of the own cell and the cell after it along x: one run.
-          run(i, i + 1, grid.real_begin(c + 2), std::true_type{});
+          run(i, i + 1, bisect_x<D, true>(x, i + 1, grid.real_begin(c + 2), x_hi),
+              std::true_type{});
           for (int r = 0; r < RowOffsets<D>::kAhead; ++r) {
             const std::size_t cr =
                 c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            run(i, grid.real_begin(cr - 1), grid.real_begin(cr + 2), std::true_type{});
+            const auto [jb, je] = window(grid.real_begin(cr - 1), grid.real_begin(cr + 2));
+            run(i, jb, je, std::true_type{});
           }
           for (int r = 0; r < RowOffsets<D>::kRows; ++r) {
             const std::size_t cr =
                 c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            run(i, grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2), std::false_type{});
+            const auto [jb, je] = window(grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2));
+            run(i, jb, je, std::false_type{});
           }
           // i's accumulator: what earlier particles gave it as their j, the self pair, then
           // the partial sums.
@@ -308,6 +358,19 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
   }
 }
 
+// The buffer `slot` of eq's per-particle factors, for n particles; null when it has none.
+template <class Eq>
+OwnCell<OwnOf<Eq>>* own_buffer(SweepWorkspace& work, const Eq&, std::size_t slot, std::size_t n) {
+  if constexpr (HasOwn<Eq>)
+    return work.template buffer<OwnCell<OwnOf<Eq>>>(slot, n).data();
+  else
+    return nullptr;
+}
+template <class Eq>
+void fill_own(const Eq& eq, OwnCell<OwnOf<Eq>>* own, std::size_t b) {
+  if constexpr (HasOwn<Eq>) own[b].value = eq.own(b);
+}
+
 template <int D, class Kernel, class... Eqs, std::size_t... I>
 void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
                  std::index_sequence<I...> seq, Eqs&... eqs) {
@@ -316,18 +379,27 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
       ctx.work.template buffer<typename Eqs::Acc>(same_type_slot<I, typename Eqs::Acc...>(), n)
           .data()...};
   std::tuple<Eqs&...> eqt{eqs...};
+  // The equations' per-particle factors, for real and ghost particles (null: none).
+  std::tuple<OwnCell<OwnOf<Eqs>>*...> own{
+      own_buffer(ctx.work, eqs, same_type_slot<I, OwnOf<Eqs>...>(), ps.size())...};
   const auto nn = static_cast<long>(n);
+  const auto n_all = static_cast<long>(ps.size());
 #pragma omp parallel
   {
+#pragma omp for schedule(static)
+    for (long bb = 0; bb < n_all; ++bb) {
+      const auto b = static_cast<std::size_t>(bb);
+      (fill_own(std::get<I>(eqt), std::get<I>(own), b), ...);
+    }
 #pragma omp for schedule(static)
     for (long ii = 0; ii < nn; ++ii) {
       const auto i = static_cast<std::size_t>(ii);
       ((std::get<I>(acc)[i] = std::get<I>(eqt).init(i)), ...);
     }
     if (ctx.uniform_h > 0.0)
-      sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, seq);
+      sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, seq);
     else
-      sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, seq);
+      sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, seq);
 #pragma omp for schedule(static)
     for (long ii = 0; ii < nn; ++ii) {
       const auto i = static_cast<std::size_t>(ii);
