@@ -33,6 +33,33 @@ struct OwnOfT<Eq> {
 template <class Eq>
 using OwnOf = typename OwnOfT<Eq>::type;
 
+// The factors of several equations side by side (AccelerationSum's terms): a plain aggregate of
+// doubles, which the sweep stores component by component; a term without factors takes no room.
+template <class... Os>
+struct OwnPack {};
+template <class O, class... Rest>
+struct OwnPack<O, Rest...> {
+  [[no_unique_address]] O first;
+  [[no_unique_address]] OwnPack<Rest...> rest;
+};
+template <class... Os>
+OwnPack<Os...> make_own_pack(const Os&... os) {
+  if constexpr (sizeof...(Os) == 0) {
+    return {};
+  } else {
+    return [](const auto& first, const auto&... rest) {
+      return OwnPack<Os...>{first, make_own_pack(rest...)};
+    }(os...);
+  }
+}
+template <std::size_t K, class O, class... Rest>
+const auto& own_get(const OwnPack<O, Rest...>& pack) {
+  if constexpr (K == 0)
+    return pack.first;
+  else
+    return own_get<K - 1>(pack.rest);
+}
+
 // Particle b's factors for eq (NoOwn{} when it has none).
 template <class Eq>
 OwnOf<Eq> own_of(const Eq& eq, std::size_t b) {

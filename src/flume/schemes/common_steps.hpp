@@ -34,7 +34,8 @@ void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& 
 // full kernel, as in the interior.
 template <int D, class Kernel>
 void shepard_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo) {
-  auto& filtered = ctx.work.template buffer<double>(1, ps.n_real);
+  // The slot past the sweep's one accumulator (sweep.hpp, kFirstAccSlot).
+  auto& filtered = ctx.work.template buffer<double>(detail::kFirstAccSlot + 1, ps.n_real);
   ShepardFilterW63<D> filter{ps, filtered};
   sweep<D, Kernel>(ctx, ps, "shepard_filter", filter);
   std::copy(filtered.begin(), filtered.end(), ps.rho.begin());

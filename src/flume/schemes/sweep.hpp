@@ -57,30 +57,39 @@ struct SweepContext {
 
 namespace detail {
 
-// Slot of the I-th accumulator among those of the same type before it, so that two equations
-// with the same Acc type get different buffers.
-template <std::size_t I, class... Accs>
-constexpr std::size_t same_type_slot() {
-  using T = std::tuple_element_t<I, std::tuple<Accs...>>;
+// An equation's per-particle factors (own.hpp) for the n particles of the set, real and ghost,
+// stored component by component like the accumulators (AccStore), so that the block loop reads
+// j's factors with unit stride. Equations without factors have an empty store.
+template <class O>
+struct OwnStore {
+  static constexpr std::size_t kDoubles = std::is_empty_v<O> ? 0 : sizeof(O) / sizeof(double);
+  static_assert(std::is_empty_v<O> ||
+                    (std::is_trivially_copyable_v<O> && sizeof(O) % sizeof(double) == 0),
+                "per-particle factors are made of doubles only");
+  struct Component {  // a buffer type of its own: the factors live while accumulators do
+    double v;
+  };
+  Component* base = nullptr;
   std::size_t n = 0;
-  std::size_t k = 0;
-  ((n += (k++ < I && std::is_same_v<Accs, T>) ? 1 : 0), ...);
-  return n;
-}
 
-// The buffer of an equation's per-particle factors (own.hpp): a type of its own, so that it never
-// shares a workspace buffer with an accumulator of the same type.
-template <class O>
-struct OwnCell {
-  O value;
+  O get(std::size_t b) const {
+    if constexpr (kDoubles == 0) {
+      return O{};
+    } else {
+      std::array<double, kDoubles> f;
+      for (std::size_t d = 0; d < kDoubles; ++d)
+        f[d] = base[d * n + b].v;
+      return std::bit_cast<O>(f);
+    }
+  }
+  void set(std::size_t b, const O& o) const {
+    if constexpr (kDoubles > 0) {
+      const auto f = std::bit_cast<std::array<double, kDoubles>>(o);
+      for (std::size_t d = 0; d < kDoubles; ++d)
+        base[d * n + b].v = f[d];
+    }
+  }
 };
-template <class O>
-O own_at(const OwnCell<O>* own, std::size_t b) {
-  if constexpr (std::is_same_v<O, NoOwn>)
-    return NoOwn{};
-  else
-    return own[b].value;
-}
 
 constexpr int kSlabLayers = 2;  // cell layers per slab (>= 1: a pair reaches one layer ahead)
 
@@ -187,19 +196,49 @@ struct Shares {
   }
 };
 
+// The accumulators of one equation for n particles, stored component by component (structure
+// of arrays): the block loop adds j's share to each component with unit stride, where an array
+// of Acc would have the vector lanes transposed to and from it for every block (an 8 x 8
+// transpose each way for CSPH's two matrices). The stores are double buffers of the workspace,
+// which the re-ordering also uses between sweeps: equation I of a group has slot
+// kFirstAccSlot + I, and a caller that needs a double buffer during a sweep takes a slot past
+// the group's.
+inline constexpr std::size_t kFirstAccSlot = 0;
+template <class Acc>
+struct AccStore {
+  using Value = Acc;
+  static constexpr std::size_t kDoubles = Shares<Acc>::kDoubles;
+  using Flat = typename Shares<Acc>::Flat;
+  double* base = nullptr;
+  std::size_t n = 0;
+
+  Acc get(std::size_t i) const {
+    Flat f;
+    for (std::size_t d = 0; d < kDoubles; ++d)
+      f[d] = base[d * n + i];
+    return std::bit_cast<Acc>(f);
+  }
+  void set(std::size_t i, const Acc& a) const {
+    const auto f = std::bit_cast<Flat>(a);
+    for (std::size_t d = 0; d < kDoubles; ++d)
+      base[d * n + i] = f[d];
+  }
+  void add(std::size_t j, const Acc& a) const {
+    const auto f = std::bit_cast<Flat>(a);
+    for (std::size_t d = 0; d < kDoubles; ++d)
+      base[d * n + j] += f[d];
+  }
+};
+
 // Pair (i, j) of a block: i's share goes to partial sum k (Lanes) or to shares.block[k], j's
 // to acc[j] (Real) or to a dropped local (a ghost j, whose accumulator is not kept).
 template <bool Real, bool Lanes, class Eq, class Acc, class O, int D>
-inline void pair_share(const Eq& eq, Acc* __restrict acc, const OwnCell<O>* own,
+inline void pair_share(const Eq& eq, const AccStore<Acc>& acc, const OwnStore<O>& own,
                        Shares<Acc>& __restrict shares, std::size_t i, std::size_t j, std::size_t k,
                        const Pair<D>& g) {
-  Acc a_i{};
-  if constexpr (Real) {
-    pair_of(eq, a_i, acc[j], own_at(own, i), own_at(own, j), i, j, g);
-  } else {
-    Acc dropped{};
-    pair_of(eq, a_i, dropped, own_at(own, i), own_at(own, j), i, j, g);
-  }
+  Acc a_i{}, a_j{};
+  pair_of(eq, a_i, a_j, own.get(i), own.get(j), i, j, g);
+  if constexpr (Real) acc.add(j, a_j);
   if constexpr (Lanes)
     shares.add_lane(k, a_i);
   else
@@ -266,7 +305,7 @@ template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, cla
           std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
                  const OwnTuple& own, std::index_sequence<I...>) {
-  using Accs = std::tuple<std::remove_pointer_t<std::tuple_element_t<I, AccTuple>>...>;
+  using Accs = std::tuple<typename std::tuple_element_t<I, AccTuple>::Value...>;
   const CellGrid<D>& grid = ctx.grid;
   const std::size_t layer = grid.strides()[D - 1];
   const long layers = static_cast<long>(grid.dims()[D - 1]);
@@ -316,7 +355,7 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
         const std::size_t b = grid.real_begin(c), e = grid.real_begin(c + 1);
         if (b == e) continue;
         for (std::size_t i = b; i < e; ++i) {
-          Accs ai{std::get<I>(acc)[i]...};
+          Accs ai{std::get<I>(acc).get(i)...};
           (std::get<I>(shares).clear(), ...);
           {  // the self pair
             Accs scratch{};
@@ -324,7 +363,7 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
             g0.h = hs[i];
             g0.w = UniformH ? w0 : Kernel::w(0.0, hs[i]);
             (pair_of(std::get<I>(eqs), std::get<I>(ai), std::get<I>(scratch),
-                     own_at(std::get<I>(own), i), own_at(std::get<I>(own), i), i, i, g0),
+                     std::get<I>(own).get(i), std::get<I>(own).get(i), i, i, g0),
              ...);
           }
           // Each run of three cells along x is sorted by x (CellGrid): only its particles
@@ -351,37 +390,38 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
           }
           // i's accumulator: what earlier particles gave it as their j, the self pair, then
           // the partial sums.
-          ((std::get<I>(acc)[i] = std::get<I>(shares).total(std::get<I>(ai))), ...);
+          (std::get<I>(acc).set(i, std::get<I>(shares).total(std::get<I>(ai))), ...);
         }
       }
     }
   }
 }
 
-// The buffer `slot` of eq's per-particle factors, for n particles; null when it has none.
+// The store `slot` of eq's per-particle factors, for n particles (empty when it has none).
 template <class Eq>
-OwnCell<OwnOf<Eq>>* own_buffer(SweepWorkspace& work, const Eq&, std::size_t slot, std::size_t n) {
-  if constexpr (HasOwn<Eq>)
-    return work.template buffer<OwnCell<OwnOf<Eq>>>(slot, n).data();
+OwnStore<OwnOf<Eq>> own_store(SweepWorkspace& work, const Eq&, std::size_t slot, std::size_t n) {
+  using Store = OwnStore<OwnOf<Eq>>;
+  if constexpr (Store::kDoubles == 0)
+    return {};
   else
-    return nullptr;
+    return {work.template buffer<typename Store::Component>(slot, Store::kDoubles * n).data(), n};
 }
-template <class Eq>
-void fill_own(const Eq& eq, OwnCell<OwnOf<Eq>>* own, std::size_t b) {
-  if constexpr (HasOwn<Eq>) own[b].value = eq.own(b);
+
+// The accumulator store `slot` of type Acc for n particles.
+template <class Acc>
+AccStore<Acc> acc_store(SweepWorkspace& work, std::size_t slot, std::size_t n) {
+  return {work.template buffer<double>(kFirstAccSlot + slot, AccStore<Acc>::kDoubles * n).data(),
+          n};
 }
 
 template <int D, class Kernel, class... Eqs, std::size_t... I>
 void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
                  std::index_sequence<I...> seq, Eqs&... eqs) {
   const std::size_t n = ps.n_real;
-  std::tuple<typename Eqs::Acc*...> acc{
-      ctx.work.template buffer<typename Eqs::Acc>(same_type_slot<I, typename Eqs::Acc...>(), n)
-          .data()...};
+  std::tuple<AccStore<typename Eqs::Acc>...> acc{acc_store<typename Eqs::Acc>(ctx.work, I, n)...};
   std::tuple<Eqs&...> eqt{eqs...};
   // The equations' per-particle factors, for real and ghost particles (null: none).
-  std::tuple<OwnCell<OwnOf<Eqs>>*...> own{
-      own_buffer(ctx.work, eqs, same_type_slot<I, OwnOf<Eqs>...>(), ps.size())...};
+  std::tuple<OwnStore<OwnOf<Eqs>>...> own{own_store(ctx.work, eqs, I, ps.size())...};
   const auto nn = static_cast<long>(n);
   const auto n_all = static_cast<long>(ps.size());
 #pragma omp parallel
@@ -389,12 +429,15 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
 #pragma omp for schedule(static)
     for (long bb = 0; bb < n_all; ++bb) {
       const auto b = static_cast<std::size_t>(bb);
-      (fill_own(std::get<I>(eqt), std::get<I>(own), b), ...);
+      auto fill = [&](const auto& eq, const auto& store) {
+        if constexpr (HasOwn<std::remove_cvref_t<decltype(eq)>>) store.set(b, eq.own(b));
+      };
+      (fill(std::get<I>(eqt), std::get<I>(own)), ...);
     }
 #pragma omp for schedule(static)
     for (long ii = 0; ii < nn; ++ii) {
       const auto i = static_cast<std::size_t>(ii);
-      ((std::get<I>(acc)[i] = std::get<I>(eqt).init(i)), ...);
+      (std::get<I>(acc).set(i, std::get<I>(eqt).init(i)), ...);
     }
     if (ctx.uniform_h > 0.0)
       sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, seq);
@@ -403,7 +446,11 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
 #pragma omp for schedule(static)
     for (long ii = 0; ii < nn; ++ii) {
       const auto i = static_cast<std::size_t>(ii);
-      (std::get<I>(eqt).finish(std::get<I>(acc)[i], i), ...);
+      auto finish = [&](const auto& eq, const auto& store) {
+        auto a = store.get(i);
+        eq.finish(a, i);
+      };
+      (finish(std::get<I>(eqt), std::get<I>(acc)), ...);
     }
   }
 }
