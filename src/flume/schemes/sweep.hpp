@@ -199,11 +199,15 @@ struct Shares {
 // The accumulators of one equation for n particles, stored component by component (structure
 // of arrays): the block loop adds j's share to each component with unit stride, where an array
 // of Acc would have the vector lanes transposed to and from it for every block (an 8 x 8
-// transpose each way for CSPH's two matrices). The stores are double buffers of the workspace,
-// which the re-ordering also uses between sweeps: equation I of a group has slot
-// kFirstAccSlot + I, and a caller that needs a double buffer during a sweep takes a slot past
-// the group's.
+// transpose each way for CSPH's two matrices). A store of one double per particle lives in a
+// workspace buffer of double, one of D doubles in a buffer of Vec<D>: the buffers that the
+// re-ordering of the state uses between sweeps, so the sweeps' scalar and vector accumulators
+// cost no memory of their own. Equation I of a group has slot kFirstAccSlot + I; a caller that
+// needs a buffer during a sweep takes a slot past the group's.
 inline constexpr std::size_t kFirstAccSlot = 0;
+template <std::size_t K, int D>
+using AccBuffer =
+    std::conditional_t<K == 1, double, std::conditional_t<K == D, Vec<D>, std::array<double, K>>>;
 template <class Acc>
 struct AccStore {
   using Value = Acc;
@@ -408,17 +412,21 @@ OwnStore<OwnOf<Eq>> own_store(SweepWorkspace& work, const Eq&, std::size_t slot,
 }
 
 // The accumulator store `slot` of type Acc for n particles.
-template <class Acc>
+template <int D, class Acc>
 AccStore<Acc> acc_store(SweepWorkspace& work, std::size_t slot, std::size_t n) {
-  return {work.template buffer<double>(kFirstAccSlot + slot, AccStore<Acc>::kDoubles * n).data(),
-          n};
+  using Element = AccBuffer<AccStore<Acc>::kDoubles, D>;
+  static_assert(sizeof(Element) == AccStore<Acc>::kDoubles * sizeof(double));
+  auto& buffer = work.template buffer<Element>(kFirstAccSlot + slot, n);
+  // The elements are doubles side by side (double, Vec<D> or std::array of doubles).
+  return {reinterpret_cast<double*>(buffer.data()), n};
 }
 
 template <int D, class Kernel, class... Eqs, std::size_t... I>
 void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
                  std::index_sequence<I...> seq, Eqs&... eqs) {
   const std::size_t n = ps.n_real;
-  std::tuple<AccStore<typename Eqs::Acc>...> acc{acc_store<typename Eqs::Acc>(ctx.work, I, n)...};
+  std::tuple<AccStore<typename Eqs::Acc>...> acc{
+      acc_store<D, typename Eqs::Acc>(ctx.work, I, n)...};
   std::tuple<Eqs&...> eqt{eqs...};
   // The equations' per-particle factors, for real and ghost particles (null: none).
   std::tuple<OwnStore<OwnOf<Eqs>>...> own{own_store(ctx.work, eqs, I, ps.size())...};
