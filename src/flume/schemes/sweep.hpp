@@ -5,9 +5,11 @@
 //   Acc init(i);                        its starting value
 //   void pair(Acc& ai, Acc& aj, i, j, const Pair<D>& g);   both particles' shares of pair (i, j)
 //   void finish(Acc& a, i);             turns the sum into particle i's fields
-// and knows nothing of loops or threads.
+// and, optionally, per-particle factors computed once before the pairs (own.hpp); it knows
+// nothing of loops or threads.
 // Each pair of real particles is visited once (a half stencil of cells: the rest of i's own cell
-// and the cell after it along x, then the rows of cells ahead), and the equation gives i and j
+// and the cell after it along x, then the rows of cells ahead; each row of cells is sorted by x,
+// so its run is cut to the particles within one range of x_i), and the equation gives i and j
 // their shares. A pair with a ghost j is visited from the real side only, with a scratch aj that
 // is thrown away (ghosts are copies refreshed from their sources). The self pair (i, i) is
 // visited once with r = 0, W = W(0), grad W = 0 and a scratch aj.
