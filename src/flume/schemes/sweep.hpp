@@ -130,19 +130,6 @@ struct RowOffsets {
   }
 };
 
-// The first index k in [b, e) with x[k][0] >= v (Strict: > v), the run being sorted by x.
-template <int D, bool Strict>
-std::size_t bisect_x(const Vec<D>* x, std::size_t b, std::size_t e, double v) {
-  while (b < e) {
-    const std::size_t mid = b + (e - b) / 2;
-    if (Strict ? x[mid][0] <= v : x[mid][0] < v)
-      b = mid + 1;
-    else
-      e = mid;
-  }
-  return b;
-}
-
 constexpr std::size_t kChunk = 64;  // candidates evaluated in one vectorised block
 constexpr std::size_t kLanes = 8;   // partial sums of i's share: term k goes to sum k % kLanes
 
@@ -322,6 +309,7 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
   const auto* hs = ps.h.data();
   const Vec<D>* x = ps.x.data();
   const double range = grid.range();
+  const std::size_t row_cells = grid.dims()[0];
 
   // Per thread: i's shares of the pairs of a block, and their partial sums.
   std::tuple<Shares<std::tuple_element_t<I, Accs>>...> shares;
@@ -357,7 +345,20 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
                                          static_cast<std::size_t>(layers)) *
                                 layer;
       owned = grid.real_begin(c_begin);
+      // The ends of the windows, [lo, hi) of each run: along a row of cells the particles are
+      // sorted by x, and so are the i taken in turn, so the ends only move forward within a
+      // row; they restart with each row.
+      std::size_t own_hi = 0;
+      std::array<std::size_t, RowOffsets<D>::kAhead> ahead_lo{}, ahead_hi{};
+      std::array<std::size_t, RowOffsets<D>::kRows> ghost_lo{}, ghost_hi{};
       for (std::size_t c = c_begin; c < c_end; ++c) {
+        if (c == c_begin || (D > 1 && c % row_cells == 0)) {
+          own_hi = 0;
+          ahead_lo.fill(0);
+          ahead_hi.fill(0);
+          ghost_lo.fill(0);
+          ghost_hi.fill(0);
+        }
         const std::size_t b = grid.real_begin(c), e = grid.real_begin(c + 1);
         if (b == e) continue;
         for (std::size_t i = b; i < e; ++i) {
@@ -373,26 +374,31 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
              ...);
           }
           // Each run of three cells along x is sorted by x (CellGrid): only its particles
-          // with x within one range of x_i can interact with i, found by bisection.
+          // with x within one range of x_i can interact with i.
           const double x_lo = x[i][0] - range, x_hi = x[i][0] + range;
-          auto window = [&](std::size_t jb, std::size_t je) {
-            return std::pair{bisect_x<D, false>(x, jb, je, x_lo),
-                             bisect_x<D, true>(x, jb, je, x_hi)};
+          auto slide = [&](std::size_t& lo, std::size_t& hi, std::size_t jb, std::size_t je) {
+            lo = std::max(lo, jb);
+            while (lo < je && x[lo][0] < x_lo)
+              ++lo;
+            hi = std::max(hi, lo);
+            while (hi < je && x[hi][0] <= x_hi)
+              ++hi;
           };
           // The rest of the own cell and the cell after it along x: one run.
-          run(i, i + 1, bisect_x<D, true>(x, i + 1, grid.real_begin(c + 2), x_hi),
-              std::true_type{});
+          std::size_t own_lo = i + 1;
+          slide(own_lo, own_hi, i + 1, grid.real_begin(c + 2));
+          run(i, i + 1, own_hi, std::true_type{});
           for (int r = 0; r < RowOffsets<D>::kAhead; ++r) {
-            const std::size_t cr =
-                c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            const auto [jb, je] = window(grid.real_begin(cr - 1), grid.real_begin(cr + 2));
-            run(i, jb, je, std::true_type{});
+            const auto k = static_cast<std::size_t>(r);
+            const std::size_t cr = c + static_cast<std::size_t>(rows.all[k]);
+            slide(ahead_lo[k], ahead_hi[k], grid.real_begin(cr - 1), grid.real_begin(cr + 2));
+            run(i, ahead_lo[k], ahead_hi[k], std::true_type{});
           }
           for (int r = 0; r < RowOffsets<D>::kRows; ++r) {
-            const std::size_t cr =
-                c + static_cast<std::size_t>(rows.all[static_cast<std::size_t>(r)]);
-            const auto [jb, je] = window(grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2));
-            run(i, jb, je, std::false_type{});
+            const auto k = static_cast<std::size_t>(r);
+            const std::size_t cr = c + static_cast<std::size_t>(rows.all[k]);
+            slide(ghost_lo[k], ghost_hi[k], grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2));
+            run(i, ghost_lo[k], ghost_hi[k], std::false_type{});
           }
           // i's accumulator: what earlier particles gave it as their j, the self pair, then
           // the partial sums.
