@@ -18,6 +18,30 @@ constexpr std::size_t kMaxCells = std::size_t{1} << 26;
 // two points closer than the range into cells two apart (the rounding error of the scaled
 // coordinate is a few ulps of at most 2^26, far below 1e-6).
 constexpr double kEdgeMargin = 1.0 + 1e-6;
+
+// Sorts each cell's run of `order` (particle k of cell c is order[start[c] - offset + k]) by the
+// x-coordinate, ties by index: cells are contiguous along x, so each row of cells is then sorted
+// by x. An insertion sort: from one step to the next the runs are already nearly sorted.
+template <int D>
+void sort_cells_by_x(std::span<const Vec<D>> x, const std::vector<std::uint32_t>& start,
+                     std::uint32_t offset, std::vector<std::uint32_t>& order) {
+  const auto cells = static_cast<long>(start.size()) - 1;
+  auto before = [&](std::uint32_t a, std::uint32_t b) {
+    return x[a][0] < x[b][0] || (x[a][0] == x[b][0] && a < b);
+  };
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < cells; ++c) {
+    const std::size_t b = start[static_cast<std::size_t>(c)] - offset;
+    const std::size_t e = start[static_cast<std::size_t>(c) + 1] - offset;
+    for (std::size_t k = b + 1; k < e; ++k) {
+      const std::uint32_t v = order[k];
+      std::size_t m = k;
+      for (; m > b && before(v, order[m - 1]); --m)
+        order[m] = order[m - 1];
+      order[m] = v;
+    }
+  }
+}
 }  // namespace
 
 template <int D>
@@ -49,30 +73,6 @@ void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uin
   for (std::size_t c = cell_count_; c > 0; --c)
     start[c] = start[c - 1] + offset;
   start[0] = offset;
-}
-
-// Sorts each cell's run of `order` (particle k of cell c is order[start[c] - offset + k]) by the
-// x-coordinate, ties by index: cells are contiguous along x, so each row of cells is then sorted
-// by x. An insertion sort: from one step to the next the runs are already nearly sorted.
-template <int D>
-void sort_cells_by_x(std::span<const Vec<D>> x, const std::vector<std::uint32_t>& start,
-                     std::uint32_t offset, std::vector<std::uint32_t>& order) {
-  const auto cells = static_cast<long>(start.size()) - 1;
-  auto before = [&](std::uint32_t a, std::uint32_t b) {
-    return x[a][0] < x[b][0] || (x[a][0] == x[b][0] && a < b);
-  };
-#pragma omp parallel for schedule(static)
-  for (long c = 0; c < cells; ++c) {
-    const std::size_t b = start[static_cast<std::size_t>(c)] - offset;
-    const std::size_t e = start[static_cast<std::size_t>(c) + 1] - offset;
-    for (std::size_t k = b + 1; k < e; ++k) {
-      const std::uint32_t v = order[k];
-      std::size_t m = k;
-      for (; m > b && before(v, order[m - 1]); --m)
-        order[m] = order[m - 1];
-      order[m] = v;
-    }
-  }
 }
 
 template <int D>

@@ -224,7 +224,7 @@ struct AccStore {
 };
 
 // Pair (i, j) of a block: i's share goes to partial sum k (Lanes) or to shares.block[k], j's
-// to acc[j] (Real) or to a dropped local (a ghost j, whose accumulator is not kept).
+// to its accumulator (Real) or nowhere (a ghost j, whose accumulator is not kept).
 template <bool Real, bool Lanes, class Eq, class Acc, class O, int D>
 inline void pair_share(const Eq& eq, const AccStore<Acc>& acc, const OwnStore<O>& own,
                        Shares<Acc>& __restrict shares, std::size_t i, std::size_t j, std::size_t k,
@@ -436,7 +436,7 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps,
   std::tuple<AccStore<typename Eqs::Acc>...> acc{
       acc_store<D, typename Eqs::Acc>(ctx.work, I, n)...};
   std::tuple<Eqs&...> eqt{eqs...};
-  // The equations' per-particle factors, for real and ghost particles (null: none).
+  // The equations' per-particle factors, for real and ghost particles (empty stores: none).
   std::tuple<OwnStore<OwnOf<Eqs>>...> own{own_store(ctx.work, eqs, I, ps.size())...};
   const auto nn = static_cast<long>(n);
   const auto n_all = static_cast<long>(ps.size());
