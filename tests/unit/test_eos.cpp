@@ -46,6 +46,22 @@ TEST(TaitEos, CompressionPositiveTensionNegative) {
               8.0 * kEps * e.kappa);  // a few ulp of kappa * 1.007 (cancellation in "- 1")
 }
 
+TEST(TaitEos, WholeExponentPowerMatchesPow) {
+  // A whole gamma goes by repeated squaring (pressure's fast path), any other through pow: both
+  // are a^gamma. For gamma = 7 (a^7 = a^4 a^2 a, three roundings compounded by squaring, at most
+  // ~6 ulp) against the correctly rounded pow (< 1 ulp): 8 ulp of a^gamma.
+  for (const double gamma : {1.0, 2.0, 7.0, 1.4}) {
+    const TaitEos e = water(gamma);
+    for (const double a : {0.5, 0.93, 0.999, 1.0, 1.0007, 1.02, 1.3}) {
+      const double want = std::pow(a, gamma);
+      EXPECT_NEAR(e.power(a), want, 8.0 * kEps * want) << "gamma " << gamma << " a " << a;
+    }
+    EXPECT_EQ(e.power(1.0), 1.0);  // products of ones, or pow(1, gamma): exactly 1
+  }
+  // gamma = 1 multiplies by a once: exact.
+  EXPECT_EQ(water(1.0).power(1.2345), 1.2345);
+}
+
 TEST(TaitEos, ReferenceSoundSpeed) {
   const TaitEos e = water();
   // sqrt(gamma kappa / rho0) = c0 = 20: a few ulp (pow(1, 6) = 1 exactly, one sqrt and the

@@ -16,9 +16,10 @@ void sort_state(ParticleSet<D>& ps, const std::vector<std::uint32_t>& order, Swe
   const auto n = static_cast<long>(order.size());
   ps.for_each_state_field([&](auto& field) {
     using T = typename std::decay_t<decltype(field)>::value_type;
-    auto& out = work.buffer<T>(0, 0);
+    // Resized without being cleared first (every element is overwritten below): clearing then
+    // growing it would fill it with zeros, a serial memset of the whole state every step.
+    auto& out = work.buffer<T>(0, order.size());
     out.reserve(field.capacity());  // the buffers trade places: both keep room for the ghosts
-    out.resize(order.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < n; ++k)
       out[static_cast<std::size_t>(k)] = field[order[static_cast<std::size_t>(k)]];
@@ -88,14 +89,16 @@ void Simulation<D>::step(double max_dt) {
                     "t = {:.6g} s, step {}: the simulation blew up",
                     dt_rule, first_dt_, time_, steps_));
   const double dt = std::min(dt_rule, max_dt);
-  integrator_.kick(ps_, dt);
   if (scheme_->evolves_density()) {
+    integrator_.kick(ps_, dt);
     phase.reset();
     scheme_->compute_density_rate(ps_, ctx, halo_);
     phase.emplace(&clock_, "integration");
     integrator_.advance_density(ps_, dt);
+    integrator_.drift(ps_, dt);
+  } else {
+    integrator_.kick_and_drift(ps_, dt);
   }
-  integrator_.drift(ps_, dt);
   phase.emplace(&clock_, "boundaries");
   ps_.drop_ghosts();
   walls_.reflect_crossings(ps_, range);
