@@ -247,11 +247,10 @@ inline void pair_share(const Eq& eq, const AccStore<Acc>& acc, const OwnStore<O>
 // shares.block and are folded after the loop.
 template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
           class OwnTuple, class ShareTuple, std::size_t... I>
-[[gnu::always_inline]] inline void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
-                                              AccTuple& acc, const OwnTuple& own,
-                                              ShareTuple& shares, std::size_t i, std::size_t cb,
-                                              std::size_t lo, std::size_t ce,
-                                              std::index_sequence<I...>) {
+FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
+                              const OwnTuple& own, ShareTuple& shares, std::size_t i,
+                              std::size_t cb, std::size_t lo, std::size_t ce,
+                              std::index_sequence<I...>) {
   const Vec<D>* x = ps.x.data();
   const double* hs = ps.h.data();
   const Vec<D> xi = x[i];
@@ -295,18 +294,16 @@ template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTup
   }
 }
 
-// pair_block as a function of its own, flattened (the equations inlined into it). The slab's
-// loop inlines pair_block itself when the group accumulates scalars (density, continuity:
-// measured 10-16 % faster, the block's set-up hoisted out of the particle loop) and calls this
-// for larger accumulators, whose blocks ran 5 % slower inlined (more live vector registers).
+// pair_block kept out of the slab's loop. The slab (flattened) inlines pair_block when the
+// group accumulates scalars (density, continuity: 10-16 % faster, the block's set-up hoisted
+// out of the particle loop) and calls it through this for larger accumulators: inlined, the
+// momentum sweep ran 3 % slower and CSPH's correction sweep (two 2 x 2 matrices) 2.7 x slower.
 template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
           class OwnTuple, class ShareTuple, std::size_t... I>
-[[gnu::noinline]] FLUME_FLATTEN void pair_block_call(const ParticleSet<D>& ps, double h0,
-                                                     EqTuple& eqs, AccTuple& acc,
-                                                     const OwnTuple& own, ShareTuple& shares,
-                                                     std::size_t i, std::size_t cb, std::size_t lo,
-                                                     std::size_t ce,
-                                                     std::index_sequence<I...> seq) {
+[[gnu::noinline]] void pair_block_call(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
+                                       AccTuple& acc, const OwnTuple& own, ShareTuple& shares,
+                                       std::size_t i, std::size_t cb, std::size_t lo,
+                                       std::size_t ce, std::index_sequence<I...> seq) {
   pair_block<D, Kernel, UniformH, Real, Lanes>(ps, h0, eqs, acc, own, shares, i, cb, lo, ce, seq);
 }
 
