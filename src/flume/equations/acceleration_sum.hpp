@@ -30,6 +30,7 @@ struct AccelerationSum : detail::OwnDeclaration<(HasOwn<Terms> || ...), OwnPack<
   static_assert((std::is_same_v<typename Terms::Acc, Vec<D>> && ...),
                 "every term of the momentum equation accumulates an acceleration");
   using Acc = Vec<D>;
+  static constexpr bool kGradientOnly = (gradient_only<Terms>() && ...);
   ParticleSet<D>& ps;
   std::tuple<const Terms&...> terms;
 

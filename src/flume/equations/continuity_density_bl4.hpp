@@ -14,6 +14,7 @@ namespace flume {
 template <int D>
 struct ContinuityDensityBL4 {
   using Acc = double;  // sum_b V_b (v_b - v_a) . grad W_b(x_a), the divergence of v at a
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
   using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
   const std::vector<Vec<D>>& vel;

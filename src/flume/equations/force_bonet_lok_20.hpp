@@ -15,7 +15,8 @@ namespace flume {
 template <int D>
 struct ForceBonetLok20 {
   using Acc = Vec<D>;
-  using Own = double;  // 1 / rho_b, computed once per particle (own.hpp)
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
+  using Own = double;                          // 1 / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }

@@ -15,6 +15,7 @@ namespace flume {
 template <int D>
 struct ForceBonetLok7 {
   using Acc = Vec<D>;
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
   using Own = double;  // p_b / rho_b^2, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 

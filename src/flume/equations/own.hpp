@@ -69,6 +69,19 @@ OwnOf<Eq> own_of(const Eq& eq, std::size_t b) {
     return NoOwn{};
 }
 
+// An equation every term of which carries grad W (none carries W itself) may declare
+//   static constexpr bool kGradientOnly = true;
+// Its self pair (r = 0, grad W = 0) adds exact zeros, so the driver skips it: the self pair of
+// the momentum sweep, with the artificial viscosity's division, cost as much as a block of
+// eight pairs. tests/properties/test_self_pair.cpp checks every such declaration.
+template <class Eq>
+constexpr bool gradient_only() {
+  if constexpr (requires { Eq::kGradientOnly; })
+    return Eq::kGradientOnly;
+  else
+    return false;
+}
+
 // eq's pair term for (i, j), in whichever form eq has.
 template <class Eq, class Acc, class Geometry>
 void pair_of(const Eq& eq, Acc& ai, Acc& aj, const OwnOf<Eq>& oi, const OwnOf<Eq>& oj,

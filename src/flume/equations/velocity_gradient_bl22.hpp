@@ -12,6 +12,7 @@ namespace flume {
 template <int D>
 struct VelocityGradientBL22 {
   using Acc = Mat<D>;
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
   using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 

@@ -19,6 +19,7 @@ namespace flume {
 template <int D>
 struct ViscosityArtificialMonaghan {
   using Acc = Vec<D>;
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
   ParticleSet<D>& ps;
   double alpha;
   double beta;

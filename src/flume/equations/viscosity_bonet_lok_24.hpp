@@ -38,7 +38,8 @@ void update_deviatoric_stress(ParticleSet<D>& ps, double mu) {
 template <int D>
 struct ViscosityBonetLok24 {
   using Acc = Vec<D>;
-  using Own = double;  // 1 / rho_b, computed once per particle (own.hpp)
+  static constexpr bool kGradientOnly = true;  // no self pair (own.hpp)
+  using Own = double;                          // 1 / rho_b, computed once per particle (own.hpp)
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }

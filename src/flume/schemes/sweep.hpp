@@ -374,17 +374,28 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
     }
     const std::size_t b = grid.real_begin(c), e = grid.real_begin(c + 1);
     if (b == e) continue;
+    // The runs of ghosts around this cell (most cells have none within reach).
+    std::array<std::size_t, RowOffsets<D>::kRows> ghost_b{}, ghost_e{};
+    bool any_ghost = false;
+    for (std::size_t k = 0; k < RowOffsets<D>::kRows; ++k) {
+      const std::size_t cr = c + static_cast<std::size_t>(rows.all[k]);
+      ghost_b[k] = grid.ghost_begin(cr - 1);
+      ghost_e[k] = grid.ghost_begin(cr + 2);
+      any_ghost = any_ghost || ghost_b[k] != ghost_e[k];
+    }
     for (std::size_t i = b; i < e; ++i) {
       Accs ai{std::get<I>(acc).get(i)...};
       (std::get<I>(shares).clear(), ...);
-      {  // the self pair
+      {  // the self pair (not for equations that carry grad W only: it adds zeros there)
         Accs scratch{};
         Pair<D> g0;
         g0.h = hs[i];
         g0.w = UniformH ? w0 : Kernel::w(0.0, hs[i]);
-        (pair_of(std::get<I>(eqs), std::get<I>(ai), std::get<I>(scratch), std::get<I>(own).get(i),
-                 std::get<I>(own).get(i), i, i, g0),
-         ...);
+        auto self = [&](const auto& eq, auto& a_i, auto& a_scratch, const auto& store) {
+          if constexpr (!gradient_only<std::remove_cvref_t<decltype(eq)>>())
+            pair_of(eq, a_i, a_scratch, store.get(i), store.get(i), i, i, g0);
+        };
+        (self(std::get<I>(eqs), std::get<I>(ai), std::get<I>(scratch), std::get<I>(own)), ...);
       }
       // Each run of three cells along x is sorted by x (CellGrid): only its particles with x
       // within one range of x_i can interact with i.
@@ -407,11 +418,11 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
         slide(ahead_lo[k], ahead_hi[k], grid.real_begin(cr - 1), grid.real_begin(cr + 2));
         run(i, ahead_lo[k], ahead_hi[k], std::true_type{});
       }
-      for (int r = 0; r < RowOffsets<D>::kRows; ++r) {
-        const auto k = static_cast<std::size_t>(r);
-        const std::size_t cr = c + static_cast<std::size_t>(rows.all[k]);
-        slide(ghost_lo[k], ghost_hi[k], grid.ghost_begin(cr - 1), grid.ghost_begin(cr + 2));
-        run(i, ghost_lo[k], ghost_hi[k], std::false_type{});
+      if (any_ghost) {
+        for (std::size_t k = 0; k < RowOffsets<D>::kRows; ++k) {
+          slide(ghost_lo[k], ghost_hi[k], ghost_b[k], ghost_e[k]);
+          run(i, ghost_lo[k], ghost_hi[k], std::false_type{});
+        }
       }
       // i's accumulator: what earlier particles gave it as their j, the self pair, then the
       // partial sums.
