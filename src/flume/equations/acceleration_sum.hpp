@@ -44,18 +44,49 @@ struct AccelerationSum : detail::OwnDeclaration<(HasOwn<Terms> || ...), OwnPack<
       requires(!(HasOwn<Terms> || ...)) {
     pair(a_i, a_j, OwnPack<OwnOf<Terms>...>{}, OwnPack<OwnOf<Terms>...>{}, i, j, g);
   }
-  // The terms add to local sums, and each accumulator is written once: a write to a_j between
+  // The radial terms (own.hpp, HasRadial) add their scalars s, and grad W is multiplied once:
+  //   a_i -= m_j (s_1 + s_2 + ...) grad W,  a_j += m_i (s_1 + s_2 + ...) grad W.
+  // The other terms add to local sums. Each accumulator is written once: a write to a_j between
   // two terms would make the compiler reload everything the next term reads of the particles.
   void pair(Acc& a_i, Acc& a_j, const OwnPack<OwnOf<Terms>...>& o_i,
             const OwnPack<OwnOf<Terms>...>& o_j, std::size_t i, std::size_t j,
             const Pair<D>& g) const {
+    constexpr bool radial[] = {HasRadial<Terms>...};
+    constexpr std::size_t n_radial = (std::size_t{HasRadial<Terms>} + ...);
+    constexpr std::size_t first_radial = [&] {
+      std::size_t k = 0;
+      while (k < sizeof...(Terms) && !radial[k])
+        ++k;
+      return k;
+    }();
     Acc sum_i{}, sum_j{};
+    double s = 0.0;
     [&]<std::size_t... K>(std::index_sequence<K...>) {
-      (pair_of(std::get<K>(terms), sum_i, sum_j, own_get<K>(o_i), own_get<K>(o_j), i, j, g), ...);
+      auto term = [&]<std::size_t T>(std::integral_constant<std::size_t, T>) {
+        const auto& t = std::get<T>(terms);
+        if constexpr (!HasRadial<std::remove_cvref_t<decltype(t)>>)
+          pair_of(t, sum_i, sum_j, own_get<T>(o_i), own_get<T>(o_j), i, j, g);
+        else if constexpr (T == first_radial)
+          s = radial_of(t, own_get<T>(o_i), own_get<T>(o_j), i, j, g);
+        else
+          s += radial_of(t, own_get<T>(o_i), own_get<T>(o_j), i, j, g);
+      };
+      (term(std::integral_constant<std::size_t, K>{}), ...);
     }
     (std::index_sequence_for<Terms...>{});
-    a_i += sum_i;
-    a_j += sum_j;
+    if constexpr (n_radial == sizeof...(Terms)) {
+      const Vec<D> f = g.gradw * s;
+      a_i -= f * ps.m[j];
+      a_j += f * ps.m[i];
+    } else {
+      if constexpr (n_radial > 0) {
+        const Vec<D> f = g.gradw * s;
+        sum_i -= f * ps.m[j];
+        sum_j += f * ps.m[i];
+      }
+      a_i += sum_i;
+      a_j += sum_j;
+    }
   }
   void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
 };

@@ -21,9 +21,14 @@ struct ForceBonetLok20 {
 
   Acc init(std::size_t) const { return {}; }
   Own own(std::size_t b) const { return 1.0 / ps.rho[b]; }
+  // Central: f = s grad_a W_ab with s = (p_a + p_b) / (rho_a rho_b) (own.hpp, HasRadial).
+  static constexpr bool kRadial = true;
+  double radial(Own inv_rho_i, Own inv_rho_j, std::size_t i, std::size_t j, const Pair<D>&) const {
+    return (ps.p[i] + ps.p[j]) * (inv_rho_i * inv_rho_j);
+  }
   void pair(Acc& a_i, Acc& a_j, Own inv_rho_i, Own inv_rho_j, std::size_t i, std::size_t j,
             const Pair<D>& g) const {
-    const Vec<D> f = g.gradw * ((ps.p[i] + ps.p[j]) * (inv_rho_i * inv_rho_j));
+    const Vec<D> f = g.gradw * radial(inv_rho_i, inv_rho_j, i, j, g);
     a_i -= f * ps.m[j];
     a_j += f * ps.m[i];
   }

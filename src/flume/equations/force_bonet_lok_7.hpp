@@ -21,9 +21,14 @@ struct ForceBonetLok7 {
 
   Acc init(std::size_t) const { return {}; }
   Own own(std::size_t b) const { return ps.p[b] / (ps.rho[b] * ps.rho[b]); }
+  // Central: f = s grad_a W_ab with s = p_a/rho_a^2 + p_b/rho_b^2 (own.hpp, HasRadial).
+  static constexpr bool kRadial = true;
+  double radial(Own p_rho2_i, Own p_rho2_j, std::size_t, std::size_t, const Pair<D>&) const {
+    return p_rho2_i + p_rho2_j;
+  }
   void pair(Acc& a_i, Acc& a_j, Own p_rho2_i, Own p_rho2_j, std::size_t i, std::size_t j,
             const Pair<D>& g) const {
-    const Vec<D> f = g.gradw * (p_rho2_i + p_rho2_j);
+    const Vec<D> f = g.gradw * radial(p_rho2_i, p_rho2_j, i, j, g);
     a_i -= f * ps.m[j];
     a_j += f * ps.m[i];
   }

@@ -82,6 +82,26 @@ constexpr bool gradient_only() {
     return false;
 }
 
+// A central pair force, a_i -= m_j s grad W and a_j += m_i s grad W with a scalar s (a pressure
+// force, the artificial viscosity), may say so by giving s:
+//   double radial(const Own& oi, const Own& oj, i, j, const Pair<D>& g) const;   (or without
+//   the Own arguments, as pair)
+// AccelerationSum then adds the s of its radial terms and multiplies grad W once, as a
+// hand-written momentum loop does, instead of building and adding a vector for each term.
+template <class Eq>
+concept HasRadial = requires {
+  Eq::kRadial;
+};
+
+template <class Eq, class Geometry>
+double radial_of(const Eq& eq, const OwnOf<Eq>& oi, const OwnOf<Eq>& oj, std::size_t i,
+                 std::size_t j, const Geometry& g) {
+  if constexpr (HasOwn<Eq>)
+    return eq.radial(oi, oj, i, j, g);
+  else
+    return eq.radial(i, j, g);
+}
+
 // eq's pair term for (i, j), in whichever form eq has.
 template <class Eq, class Acc, class Geometry>
 void pair_of(const Eq& eq, Acc& ai, Acc& aj, const OwnOf<Eq>& oi, const OwnOf<Eq>& oj,

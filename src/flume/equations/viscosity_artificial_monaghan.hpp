@@ -28,14 +28,18 @@ struct ViscosityArtificialMonaghan {
   // Written without a branch (the sweep vectorises it): min(u.x, 0) switches receding pairs off,
   // and Pi_ij / rho_bar^2 = h ux (-alpha c_bar + beta mu) / ((r^2 + eta^2) rho_bar) takes one
   // division.
-  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+  // Central: f = s grad_i W_ij with s = Pi_ij / rho_bar^2 (own.hpp, HasRadial).
+  static constexpr bool kRadial = true;
+  double radial(std::size_t i, std::size_t j, const Pair<D>& g) const {
     const double ux = std::min(dot(ps.v[i] - ps.v[j], g.xij), 0.0);  // receding pairs: 0
     const double rho_bar = 0.5 * (ps.rho[i] + ps.rho[j]);
     const double c_bar = 0.5 * (ps.c[i] + ps.c[j]);
     const double inv = 1.0 / ((g.r * g.r + 0.01 * g.h * g.h) * rho_bar);
     const double mu_ij = g.h * ux * rho_bar * inv;
-    const double pi_over_rho2 = g.h * ux * inv * (-alpha * c_bar + beta * mu_ij);
-    const Vec<D> f = g.gradw * pi_over_rho2;
+    return g.h * ux * inv * (-alpha * c_bar + beta * mu_ij);  // Pi_ij / rho_bar^2
+  }
+  void pair(Acc& a_i, Acc& a_j, std::size_t i, std::size_t j, const Pair<D>& g) const {
+    const Vec<D> f = g.gradw * radial(i, j, g);
     a_i -= f * ps.m[j];
     a_j += f * ps.m[i];
   }
