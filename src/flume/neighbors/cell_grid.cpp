@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 #include <fmt/format.h>
 
 #include "flume/core/error.hpp"
@@ -60,19 +62,42 @@ template <int D>
 void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
                                 std::vector<std::uint32_t>& start,
                                 std::vector<std::uint32_t>& order) {
+  // Stable and in parallel: thread t counts the particles of its contiguous chunk per cell,
+  // the offsets run over (cell, thread), and each thread places its chunk in index order. A
+  // cell then holds its particles in index order for any number of threads, the order of the
+  // serial counting sort.
   const std::size_t n = cell.size();
-  start.assign(cell_count_ + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    ++start[cell[i] + 1];
-  for (std::size_t c = 0; c < cell_count_; ++c)
-    start[c + 1] += start[c];
+  const std::size_t cells = cell_count_;
+  start.resize(cells + 1);
   order.resize(n);
-  // start[c] is advanced past each particle placed, then shifted back: one array, stable.
-  for (std::size_t i = 0; i < n; ++i)
-    order[start[cell[i]]++] = static_cast<std::uint32_t>(i);
-  for (std::size_t c = cell_count_; c > 0; --c)
-    start[c] = start[c - 1] + offset;
-  start[0] = offset;
+#pragma omp parallel
+  {
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
+    thread_counts_.assign(threads * cells, 0);
+    // The chunk of thread t, as schedule(static) would cut it.
+    const std::size_t lo = n * t / threads, hi = n * (t + 1) / threads;
+    std::uint32_t* count = thread_counts_.data() + t * cells;
+    for (std::size_t i = lo; i < hi; ++i)
+      ++count[cell[i]];
+#pragma omp barrier
+#pragma omp single
+    {
+      std::uint32_t run = offset;
+      for (std::size_t c = 0; c < cells; ++c) {
+        start[c] = run;
+        for (std::size_t u = 0; u < threads; ++u) {
+          const std::uint32_t k = thread_counts_[u * cells + c];
+          thread_counts_[u * cells + c] = run - offset;
+          run += k;
+        }
+      }
+      start[cells] = run;
+    }
+    for (std::size_t i = lo; i < hi; ++i)
+      order[count[cell[i]]++] = static_cast<std::uint32_t>(i);
+  }
 }
 
 template <int D>
@@ -128,9 +153,13 @@ const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>>
   counting_sort(real_cell_, 0, real_start_, order_);
   sort_cells_by_x(x, real_start_, 0, order_);
   // The cells in the sorted order (a counting sort leaves them ascending).
-  for (std::size_t c = 0; c < cell_count_; ++c)
+  const auto cells = static_cast<long>(cell_count_);
+#pragma omp parallel for schedule(static)
+  for (long cc = 0; cc < cells; ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
     for (std::uint32_t k = real_start_[c]; k < real_start_[c + 1]; ++k)
       real_cell_[k] = static_cast<std::uint32_t>(c);
+  }
   return order_;
 }
 
@@ -151,7 +180,7 @@ template <int D>
 std::size_t CellGrid<D>::bytes() const {
   return sizeof(std::uint32_t) *
          (real_start_.capacity() + ghost_start_.capacity() + real_cell_.capacity() +
-          ghost_cell_.capacity() + order_.capacity());
+          ghost_cell_.capacity() + order_.capacity() + thread_counts_.capacity());
 }
 
 template class CellGrid<2>;

@@ -64,11 +64,12 @@ class CellGrid {
   std::array<std::size_t, D> strides_{};
   std::size_t cell_count_ = 0;
   std::size_t n_real_ = 0;
-  std::vector<std::uint32_t> real_start_;   // size cells + 1
-  std::vector<std::uint32_t> ghost_start_;  // size cells + 1
-  std::vector<std::uint32_t> real_cell_;    // cell of each (sorted) real particle
-  std::vector<std::uint32_t> ghost_cell_;   // cell of each ghost (before sorting)
-  std::vector<std::uint32_t> order_;        // the last permutation returned
+  std::vector<std::uint32_t> real_start_;     // size cells + 1
+  std::vector<std::uint32_t> ghost_start_;    // size cells + 1
+  std::vector<std::uint32_t> real_cell_;      // cell of each (sorted) real particle
+  std::vector<std::uint32_t> ghost_cell_;     // cell of each ghost (before sorting)
+  std::vector<std::uint32_t> order_;          // the last permutation returned
+  std::vector<std::uint32_t> thread_counts_;  // counting sort: per thread and cell
 };
 
 extern template class CellGrid<2>;
