@@ -17,14 +17,16 @@ struct TaitEos {
   // a^gamma. A whole gamma (7 for water) by repeated squaring, a few products, where a pow call
   // took 7 % of a `standard` step (flume bench, 1e5 particles); the two differ by round-off.
   double power(double a) const {
-    if (gamma >= 1.0 && gamma <= 64.0 && gamma == std::floor(gamma)) {
-      auto n = static_cast<unsigned>(gamma);
-      double result = 1.0;
-      for (double square = a;; square *= square) {
-        if (n & 1u) result *= square;
-        n >>= 1;
-        if (n == 0) return result;
+    if (gamma >= 1.0 && gamma < 128.0 && gamma == std::floor(gamma)) {
+      // A fixed count of steps without a branch (a factor 1 is exact), so that the pass over
+      // the particles vectorises: a^(bit 0) a^(2 bit 1) a^(4 bit 2) ...
+      const auto n = static_cast<unsigned>(gamma);
+      double result = 1.0, square = a;
+      for (unsigned k = 0; k < 7; ++k) {
+        result *= ((n >> k) & 1u) != 0 ? square : 1.0;
+        square *= square;
       }
+      return result;
     }
     return std::pow(a, gamma);
   }
