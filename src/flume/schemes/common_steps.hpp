@@ -18,13 +18,17 @@
 
 namespace flume {
 
-// p_a = p(rho_a) and the local sound speed c_a for the real particles, then copied to the ghosts.
+// p_a = p(rho_a) and the local sound speed c_a of particle a.
+template <int D>
+void pressure_at(ParticleSet<D>& ps, const Physics<D>& phys, std::size_t a) {
+  ps.p[a] = phys.eos.pressure(ps.rho[a]);
+  ps.c[a] = phys.eos.sound_speed(ps.rho[a], ps.p[a]);
+}
+
+// p and c for the real particles, then copied to the ghosts.
 template <int D>
 void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& halo) {
-  for_each_real(ps.n_real, [&](std::size_t i) {
-    ps.p[i] = phys.eos.pressure(ps.rho[i]);
-    ps.c[i] = phys.eos.sound_speed(ps.rho[i], ps.p[i]);
-  });
+  for_each_real(ps.n_real, [&](std::size_t i) { pressure_at(ps, phys, i); });
   halo.update_scalar(ps, ps.p);
   halo.update_scalar(ps, ps.c);
 }

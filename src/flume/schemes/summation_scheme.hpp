@@ -4,7 +4,8 @@
 //                           BL Fig 10 (antisymmetric, so it still keeps linear momentum).
 // Algorithm, one step:
 //   1. sweep: rho_a = sum_b m_b W_ab                       BL (1)
-//   2. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts  BL (60)
+//   2. p_a = kappa((rho_a/rho0)^gamma - 1) (in the same pass as the sweep's finish);
+//      refresh ghosts                                       BL (60)
 //   3. sweep (if mu > 0): grad v_a                          BL (22)
 //   4. sweep: a_a = g + pressure force + viscous + artificial viscosity
 #pragma once
@@ -26,9 +27,12 @@ class SummationScheme final : public Scheme<D> {
   void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                              const Halo<D>& halo) const override {
     DensitySummation<D> density{ps};
-    sweep<D, Kernel>(ctx, ps, "density", density);
+    // The equation of state in the same pass as the density's finish (sweep_then).
+    sweep_then<D, Kernel>(
+        ctx, ps, "density", [&](std::size_t i) { pressure_at(ps, phys_, i); }, density);
     halo.update_scalar(ps, ps.rho);
-    update_pressure(ps, phys_, halo);
+    halo.update_scalar(ps, ps.p);
+    halo.update_scalar(ps, ps.c);
 
     if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
     Force<D> pressure{ps};
