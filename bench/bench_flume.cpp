@@ -14,7 +14,6 @@
 #include "flume/equations/density_summation.hpp"
 #include "flume/equations/force_bonet_lok_7.hpp"
 #include "flume/equations/force_csph_bl59.hpp"
-#include "flume/equations/shepard_gamma_bl57.hpp"
 #include "flume/kernels/wendland_c2.hpp"
 #include "flume/schemes/common_steps.hpp"
 #include "flume/sim/simulation.hpp"
@@ -127,10 +126,8 @@ BENCHMARK(BM_SweepContinuity)
 
 void BM_SweepCsphCorrection(benchmark::State& state) {
   Prepared p(state.range(0));
-  ShepardGammaBL57<2> shepard{p.ps};
   CsphGradientBL58<2> correction{p.ps};
   for (auto _ : state) {
-    sweep<2, Kernel>(p.ctx(), p.ps, "shepard_gamma", shepard);
     sweep<2, Kernel>(p.ctx(), p.ps, "correction", correction);
   }
   count_rate(state, p);

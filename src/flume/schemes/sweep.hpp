@@ -516,7 +516,7 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const The
       sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, seq);
     else
       sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, seq);
-#pragma omp for schedule(static)
+#pragma omp for simd schedule(static)
     for (long ii = 0; ii < nn; ++ii) {
       const auto i = static_cast<std::size_t>(ii);
       auto finish = [&](const auto& eq, const auto& store) {
