@@ -10,7 +10,7 @@
 #include "flume/case/build_simulation.hpp"
 #include "flume/case/case_reader.hpp"
 #include "flume/equations/continuity_density_bl4.hpp"
-#include "flume/equations/csph_gradient_bl58.hpp"
+#include "flume/equations/corrected_velocity_gradient.hpp"
 #include "flume/equations/density_summation.hpp"
 #include "flume/equations/force_bonet_lok_7.hpp"
 #include "flume/equations/force_csph_bl59.hpp"
@@ -126,7 +126,7 @@ BENCHMARK(BM_SweepContinuity)
 
 void BM_SweepCsphCorrection(benchmark::State& state) {
   Prepared p(state.range(0));
-  CsphGradientBL58<2> correction{p.ps};
+  CorrectedVelocityGradient<2, Correction::mixed> correction{p.ps};
   for (auto _ : state) {
     sweep<2, Kernel>(p.ctx(), p.ps, "correction", correction);
   }

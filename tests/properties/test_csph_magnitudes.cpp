@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "flume/equations/correction.hpp"
 #include "flume/schemes/registry.hpp"
 #include "support/hand_cases.hpp"
 #include "support/lattice.hpp"
@@ -33,14 +34,17 @@ std::unique_ptr<Scheme<2>> csph(double gamma, double mu, KernelKind k = KernelKi
   return make_scheme<2>(*preset_rows("csph"), k, fluid(gamma, mu));
 }
 
-// Every CSPH quantity of a small cloud (one h, Wendland C2), term by term from BL (53)-(59)
-// with BL (57) corrected (erratum 2): the reference the code is checked against.
+// Every quantity of a corrected continuity scheme on a small cloud (one h, Wendland C2), term by
+// term: for CSPH (mixed) from BL (53)-(59) with BL (57) corrected (erratum 2); for the Shepard
+// correction the same with L = I; for the gradient correction BL (43)-(45) and the force of
+// methods.md erratum 9. The reference the code is checked against.
 struct CsphReference {
-  std::vector<double> S, det, drho;
+  std::vector<double> S, sigma_min, drho;
   std::vector<Vec<2>> gamma, accel;
   std::vector<Mat<2>> L, grad_v;
 
-  CsphReference(const ParticleSet<2>& ps, double h, const Physics<2>& phys) {
+  CsphReference(const ParticleSet<2>& ps, double h, const Physics<2>& phys,
+                Correction c = Correction::mixed) {
     const std::size_t n = ps.n_real;
     const auto V = [&](std::size_t b) { return ps.m[b] / ps.rho[b]; };
     const auto W = [&](std::size_t a, std::size_t b) {
@@ -58,8 +62,10 @@ struct CsphReference {
       }
       gamma[a] = gamma[a] * (1.0 / S[a]);  // BL (57)
     }
-    // grad W~_b(x_a) = [grad W_b(x_a) - W_b(x_a) gamma_a] / S_a (BL (57), erratum 2).
+    // grad W~_b(x_a) = [grad W_b(x_a) - W_b(x_a) gamma_a] / S_a (BL (57), erratum 2); the
+    // gradient correction alone corrects grad W_b(x_a) itself.
     const auto gt = [&](std::size_t a, std::size_t b) {
+      if (c == Correction::gradient) return dW(a, b);
       return (dW(a, b) - gamma[a] * W(a, b)) * (1.0 / S[a]);
     };
     for (std::size_t a = 0; a < n; ++a) {
@@ -68,10 +74,14 @@ struct CsphReference {
         M += outer(ps.x[b] - ps.x[a], gt(a, b)) * V(b);  // BL (58), differences (erratum 2)
         G += outer(ps.v[b] - ps.v[a], gt(a, b)) * V(b);  // BL (55)
       }
-      det.push_back(determinant(M));
-      // L_a = M_a^{-T}; where M_a is degenerate (det <= 0.3) flume uses L_a = I
-      // (csph_gradient_bl58.hpp).
-      const bool ok = det.back() > 0.3;
+      // The smallest singular value of a 2 x 2 matrix [[a, b], [c, d]], in closed form:
+      // (sqrt((a + d)^2 + (c - b)^2) - sqrt((a - d)^2 + (b + c)^2)) / 2 (independent of
+      // flume's route through the eigenvalues of M^T M).
+      const double a0 = M(0, 0), b0 = M(0, 1), c0 = M(1, 0), d0 = M(1, 1);
+      sigma_min.push_back(0.5 * (std::hypot(a0 + d0, c0 - b0) - std::hypot(a0 - d0, b0 + c0)));
+      // L_a = M_a^{-T}; where M_a cannot be inverted usefully (sigma_min < 0.05) flume uses
+      // L_a = I (corrected_velocity_gradient.hpp).
+      const bool ok = c != Correction::shepard && sigma_min.back() >= 0.05;
       L.push_back(ok ? transpose(inverse(M)) : Mat<2>::identity());
       grad_v.push_back(ok ? G * inverse(M) : G);
     }
@@ -82,9 +92,18 @@ struct CsphReference {
         div += V(b) * dot(ps.v_half[b] - ps.v_half[a], L[a] * gt(a, b));
         // BL (59), compression positive: a_a = sum_b m_b / (rho_a rho_b) (p_b I - sigma'_b)
         // L_b grad W~_a(x_b); b = a is part of the sum.
-        const double pb = phys.eos.kappa * (std::pow(ps.rho[b] / kRho0, phys.eos.gamma) - 1.0);
-        const Mat<2> stress = Mat<2>::identity() * pb - test::deviatoric(grad_v[b], phys.mu);
-        acc += stress * (L[b] * gt(b, a)) * (ps.m[b] / (ps.rho[a] * ps.rho[b]));
+        const auto stress = [&](std::size_t d) {
+          const double pd = phys.eos.kappa * (std::pow(ps.rho[d] / kRho0, phys.eos.gamma) - 1.0);
+          return Mat<2>::identity() * pd - test::deviatoric(grad_v[d], phys.mu);
+        };
+        const double mrr = ps.m[b] / (ps.rho[a] * ps.rho[b]);
+        if (c == Correction::gradient) {
+          // Erratum 9, compression positive: sum_b m_b / (rho_a rho_b) (sigma_a L_a +
+          // sigma_b L_b) grad W_a(x_b) with sigma = p I - sigma'; the b = a term is zero.
+          acc += (stress(a) * L[a] + stress(b) * L[b]) * dW(b, a) * mrr;
+        } else {
+          acc += stress(b) * (L[b] * gt(b, a)) * mrr;
+        }
       }
       drho.push_back(-ps.rho[a] * div);
       accel.push_back(acc);
@@ -92,9 +111,11 @@ struct CsphReference {
   }
 };
 
-// A 3 x 3 patch, spacing 1 cm, each site moved by < 1 mm, h = 1.05 cm: the centre's M is well
-// conditioned (det 0.90), the edges' are too (0.38-0.42), the corners' are not (0.17-0.22), so
-// both branches of L and a non-symmetric M (the patch is irregular) are exercised.
+// A 3 x 3 patch, spacing 1 cm, each site moved by < 1 mm, h = 1.05 cm, and a tenth particle
+// off a corner that sees that corner only (the next nearest are 2.2 cm > 2h away): its M is of
+// rank one (sigma_min ~0, L = I), the patch's are usable (sigma_min 0.40-0.89, the corners'
+// and edges' ~0.4 and the centre's 0.89), so both branches of L and a non-symmetric M (the
+// patch is irregular) are exercised.
 ParticleSet<2> patch() {
   const double off[9][2] = {{0.6, -0.4}, {-0.3, 0.8},  {0.2, 0.5}, {-0.7, 0.1}, {0.4, -0.6},
                             {0.9, 0.3},  {-0.2, -0.8}, {0.5, 0.2}, {-0.6, 0.7}};
@@ -105,11 +126,12 @@ ParticleSet<2> patch() {
     const Vec<2> v{{0.3 * std::sin(k + 1.0), 0.2 * std::cos(2.0 * k)}};
     ps.add_real(k, x, v, 0.1 * (1.0 + 0.01 * k), rho[k], 0.0105);
   }
+  ps.add_real(9, Vec<2>{{-0.0203, -0.0198}}, Vec<2>{{0.1, -0.25}}, 0.1, 1001.0, 0.0105);
   return ps;
 }
 
 // Round-off: each quantity is a sum of <= 9 terms, each a product of a few factors, then (for
-// L, grad v) a 2 x 2 inverse with det >= 0.38 and (for a) another sum; the pressures carry up
+// L, grad v) a 2 x 2 inverse with sigma_min >= 0.39 and (for a) another sum; the pressures carry up
 // to ~8 ulp / 0.006 (the smallest |rho/rho0 - 1| here gives X - 1 ~ 0.02) ~ 3e-13 relative.
 // 1e-11 of the sum of the terms' sizes, estimated by scale * (1 + |value|), is ample; a wrong
 // factor, a swapped index or a sign changes these by percent or more.
@@ -117,15 +139,21 @@ void expect_close(double got, double want, double scale, const char* what, std::
   EXPECT_NEAR(got, want, 1e-11 * (scale + std::abs(want))) << what << " of particle " << a;
 }
 
-void check_against_reference(ParticleSet<2> ps, double h, double mu) {
+void check_against_reference(ParticleSet<2> ps, double h, double mu,
+                             Correction c = Correction::mixed) {
   const auto phys = fluid(7.0, mu);
-  const CsphReference ref(ps, h, phys);
-  test::compute_rates(*csph(7.0, mu), ps);
+  const CsphReference ref(ps, h, phys, c);
+  const char* names[] = {"gradient", "shepard", "mixed"};
+  test::compute_rates(*make_scheme<2>(SchemeRows{"continuity", "bl20", names[static_cast<int>(c)]},
+                                      KernelKind::wendland_c2, phys),
+                      ps);
   for (std::size_t a = 0; a < ps.n_real; ++a) {
-    ASSERT_TRUE(ref.det[a] < 0.25 || ref.det[a] > 0.35) << "ambiguous set-up at particle " << a;
-    expect_close(ps.shepard[a], ref.S[a], 0.0, "S", a);
+    ASSERT_TRUE(ref.sigma_min[a] < 0.04 || ref.sigma_min[a] > 0.06)
+        << "ambiguous set-up at particle " << a;
+    if (c != Correction::gradient) expect_close(ps.shepard[a], ref.S[a], 0.0, "S", a);
     for (int k = 0; k < 2; ++k) {
-      expect_close(ps.gamma[a][k], ref.gamma[a][k], norm(ref.gamma[a]), "gamma", a);
+      if (c != Correction::gradient)
+        expect_close(ps.gamma[a][k], ref.gamma[a][k], norm(ref.gamma[a]), "gamma", a);
       for (int l = 0; l < 2; ++l) {
         expect_close(ps.L[a](k, l), ref.L[a](k, l), 1.0, "L", a);
         expect_close(ps.grad_v[a](k, l), ref.grad_v[a](k, l), 100.0, "grad v", a);
@@ -138,7 +166,7 @@ void check_against_reference(ParticleSet<2> ps, double h, double mu) {
 }
 
 TEST(CsphMagnitude, ShepardGammaGradientAndForceOfThreeParticlesByHand) {
-  check_against_reference(test::triangle(0.013), 0.013, 0.0);  // every M_a degenerate: L = I
+  check_against_reference(test::triangle(0.013), 0.013, 0.0);  // sigma_min 0.21-0.23: L used
   // Hand values for the record, from the Wendland C2 formula (python, independent of flume):
   // S = 0.50106, 0.55864, 0.45323; gamma_0 = (57.271, 37.068) 1/m.
   auto ps = test::triangle(0.013);
@@ -157,6 +185,20 @@ TEST(CsphMagnitude, ViscousForceOfThreeParticlesByHand) {
 TEST(CsphMagnitude, IrregularPatchWithBothBranchesOfLByHand) {
   check_against_reference(patch(), 0.0105, 0.0);
   check_against_reference(patch(), 0.0105, 0.5);
+}
+
+// The other corrections of the continuity schemes on the same patch: the gradient correction
+// BL (42)-(45) with the force of erratum 9 (its L_a from the uncorrected M_a: the lone tenth
+// particle falls back), and the Shepard correction BL (53), (57) (L = I everywhere).
+TEST(CorrectionMagnitude, GradientCorrectionOfAnIrregularPatchByHand) {
+  check_against_reference(patch(), 0.0105, 0.0, Correction::gradient);
+  check_against_reference(patch(), 0.0105, 0.5, Correction::gradient);
+  check_against_reference(test::triangle(0.013), 0.013, 0.5, Correction::gradient);
+}
+
+TEST(CorrectionMagnitude, ShepardCorrectionOfAnIrregularPatchByHand) {
+  check_against_reference(patch(), 0.0105, 0.0, Correction::shepard);
+  check_against_reference(patch(), 0.0105, 0.5, Correction::shepard);
 }
 
 // ---- Fields with a known answer on a lattice and a jittered cloud ----

@@ -62,10 +62,10 @@ hydrostatic = false
   const auto walls = test::open_box<2>(-1.0, 2.0);
   SimulationConfig<2> config;
   config.cfl = 0.3;
-  return Simulation<2>(
-      ps, walls,
-      make_scheme<2>(SchemeRows{spec.density, spec.force}, *kernel_from_name(spec.kernel), phys),
-      phys, config);
+  return Simulation<2>(ps, walls,
+                       make_scheme<2>(SchemeRows{spec.density, spec.force, spec.correction},
+                                      *kernel_from_name(spec.kernel), phys),
+                       phys, config);
 }
 
 struct Totals {
@@ -175,10 +175,10 @@ hydrostatic = false
       ps.v[i][k] = u(rng);
     ps.v_half[i] = ps.v[i];
   }
-  Simulation<3> sim(
-      ps, test::open_box<3>(-1.0, 2.0),
-      make_scheme<3>(SchemeRows{spec.density, spec.force}, *kernel_from_name(spec.kernel), phys),
-      phys, SimulationConfig<3>{});
+  Simulation<3> sim(ps, test::open_box<3>(-1.0, 2.0),
+                    make_scheme<3>(SchemeRows{spec.density, spec.force, spec.correction},
+                                   *kernel_from_name(spec.kernel), phys),
+                    phys, SimulationConfig<3>{});
   Vec<3> before, after;
   double scale = 0.0;
   for (std::size_t i = 0; i < ps.n_real; ++i) {

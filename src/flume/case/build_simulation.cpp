@@ -97,8 +97,8 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
     walls.kind[k][0] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k)]);
     walls.kind[k][1] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k + 1)]);
   }
-  auto scheme =
-      make_scheme<D>(SchemeRows{spec.density, spec.force}, *kernel_from_name(spec.kernel), phys);
+  auto scheme = make_scheme<D>(SchemeRows{spec.density, spec.force, spec.correction},
+                               *kernel_from_name(spec.kernel), phys);
   SimulationConfig<D> config;
   config.cfl = spec.cfl;
   config.fixed_dt = spec.dt;

@@ -113,11 +113,25 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
                   : r.one_of("scheme.density", {"summation", "continuity"});
   s.force = r.str("scheme.force").empty() ? rows.force
                                           : r.one_of("scheme.force", {"bl7", "bl20", "bl59"});
+  s.correction =
+      r.str("scheme.correction").empty()
+          ? rows.correction
+          : r.one_of("scheme.correction", {"none", "gradient", "shepard", "first_order", "mixed"});
   const auto& combos = scheme_combinations();
-  if (std::find(combos.begin(), combos.end(), s.density + "+" + s.force) == combos.end())
+  const auto has = [&](const std::string& prefix) {
+    return std::any_of(combos.begin(), combos.end(),
+                       [&](const std::string& c) { return c.starts_with(prefix); });
+  };
+  // The key to blame: the force when no correction makes a scheme of the density and force.
+  if (!has(s.density + "+" + s.force + "+"))
     r.fail("scheme.force", fmt::format("= \"{}\" has no scheme with density \"{}\"; available "
-                                       "density+force: {}",
+                                       "density+force+correction: {}",
                                        s.force, s.density, fmt::join(combos, ", ")));
+  if (!has(s.density + "+" + s.force + "+" + s.correction))
+    r.fail("scheme.correction",
+           fmt::format("= \"{}\" has no scheme with density \"{}\" and force \"{}\"; "
+                       "available density+force+correction: {}",
+                       s.correction, s.density, s.force, fmt::join(combos, ", ")));
   s.h_over_dx = r.in_range("scheme.h_over_dx", 0.5, 4.0);
   r.one_of("scheme.integrator", {"leapfrog"});
   s.cfl = r.in_range("scheme.cfl", 1e-6, 1.0);
@@ -240,6 +254,7 @@ toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
   auto* scheme = t["scheme"].as_table();
   scheme->insert_or_assign("density", spec.density);
   scheme->insert_or_assign("force", spec.force);
+  scheme->insert_or_assign("correction", spec.correction);
   auto* eos = t["eos"].as_table();
   eos->insert_or_assign("bulk_modulus", spec.bulk_modulus);
   eos->insert_or_assign("sound_speed", spec.sound_speed);

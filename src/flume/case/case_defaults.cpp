@@ -29,6 +29,10 @@ kernel = "cubic_spline"  # cubic_spline | quintic_spline | gaussian | wendland_c
 h_over_dx = 1.3        # smoothing length h = h_over_dx * spacing
 density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4))
 force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20)) | bl59 (CSPH)
+correction = ""        # override of the preset's row (BL section 4): none | shepard (BL (53)) |
+                       # first_order (BL (47)-(52)) with a summation density (the density's
+                       # kernel); none | gradient (BL (42)-(45)) | shepard (BL (53), (57)) |
+                       # mixed (CSPH, BL (54)-(58)) with a continuity density (its gradient)
 integrator = "leapfrog"  # BL (61)-(62)
 cfl = 0.3              # Courant number C_FL of BL (63)
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off

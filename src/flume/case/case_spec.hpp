@@ -47,8 +47,9 @@ struct CaseSpec {
   // [scheme]
   std::string preset;
   std::string kernel;
-  std::string density;  // resolved row
-  std::string force;    // resolved row
+  std::string density;     // resolved row
+  std::string force;       // resolved row
+  std::string correction;  // resolved row
   double h_over_dx = 1.3;
   double cfl = 0.3;
   double alpha = 0.0;

@@ -20,7 +20,7 @@ enum OptionalField : unsigned {
   kFieldStress = 1u << 1,   // stress
   kFieldDrho = 1u << 2,     // drho
   kFieldShepard = 1u << 3,  // shepard, gamma
-  kFieldL = 1u << 4,        // L
+  kFieldL = 1u << 4,        // L, bl41_deviation
   kFieldsAll = (1u << 5) - 1,
 };
 
@@ -46,10 +46,11 @@ struct ParticleSet {
   std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k/d x_l, 1/s (opt.)
   std::vector<M> stress;     // deviatoric stress sigma' = 2 mu d', BL (23)-(24), Pa    (optional)
 
-  // --- kernel and gradient corrections (CSPH, BL 4.3) ---
+  // --- kernel and gradient corrections (BL section 4) ---
   std::vector<double> shepard;  // sum_b V_b W_b(x_a), the denominator of BL (53)-(54), - (opt.)
   std::vector<V> gamma;         // gamma(x_a) of BL (57), 1/m                              (opt.)
-  std::vector<M> L;             // correction matrix L_a of BL (58), -                     (opt.)
+  std::vector<M> L;             // correction matrix L_a of BL (45) or (58), -             (opt.)
+  std::vector<double> bl41_deviation;  // |M_a - I|, M_a the matrix of BL (41) before L, - (opt.)
 
   std::size_t n_real = 0;          // owned particles: indices [0, n_real); ghosts follow
   unsigned optional = kFieldsAll;  // the optional fields in use (the others stay empty)
@@ -82,7 +83,10 @@ struct ParticleSet {
       f(shepard);
       f(gamma);
     }
-    if (uses(kFieldL)) f(L);
+    if (uses(kFieldL)) {
+      f(L);
+      f(bl41_deviation);
+    }
   }
   template <class F>
   void for_each_field(F&& f) {

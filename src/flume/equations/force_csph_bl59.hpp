@@ -12,8 +12,8 @@
 #pragma once
 
 #include "flume/core/particle_set.hpp"
+#include "flume/equations/correction.hpp"
 #include "flume/equations/pair.hpp"
-#include "flume/equations/shepard_gamma_bl57.hpp"
 #include "flume/equations/viscosity_bonet_lok_24.hpp"
 
 namespace flume {

@@ -42,6 +42,10 @@ io::PointCloud snapshot_cloud(const ParticleSet<D>& ps) {
     cloud.ids.push_back(ps.id[i]);
   }
   cloud.fields = {std::move(vel), std::move(rho), std::move(p), std::move(m)};
+  if (ps.uses(kFieldL))  // how far BL (41) is from holding before the correction matrix
+    cloud.fields.push_back(
+        {"bl41_deviation", 1,
+         std::vector<double>(ps.bl41_deviation.begin(), ps.bl41_deviation.begin() + n)});
   return cloud;
 }
 
@@ -130,10 +134,10 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
   if (sim) {
     result.particles = sim->particles().n_real;
     out.log(
-        fmt::format("flume {}: case {} ({}D), {} particles, scheme {} ({} density + {} force), "
-                    "kernel {}, {} thread(s)",
+        fmt::format("flume {}: case {} ({}D), {} particles, scheme {} ({} density + {} force, "
+                    "correction {}), kernel {}, {} thread(s)",
                     FLUME_VERSION, spec.name, D, result.particles, spec.preset, spec.density,
-                    spec.force, spec.kernel, result.threads));
+                    spec.force, spec.correction, spec.kernel, result.threads));
     out.log(fmt::format("  c0 = {:.4g} m/s, kappa = {:.4g} Pa, h = {:.4g} m, end time {} s",
                         spec.sound_speed, spec.bulk_modulus, spec.h_over_dx * spec.spacing,
                         spec.end_time));

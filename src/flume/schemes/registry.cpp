@@ -12,10 +12,10 @@ namespace flume {
 namespace {
 const std::map<std::string, SchemeRows>& presets() {
   static const std::map<std::string, SchemeRows> table{
-      {"standard", {"summation", "bl7"}},
-      {"continuity", {"continuity", "bl20"}},
-      {"inconsistent", {"summation", "bl20"}},
-      {"csph", {"continuity", "bl59"}},
+      {"standard", {"summation", "bl7", "none"}},
+      {"continuity", {"continuity", "bl20", "none"}},
+      {"inconsistent", {"summation", "bl20", "none"}},
+      {"csph", {"continuity", "bl59", "mixed"}},
   };
   return table;
 }
@@ -38,8 +38,11 @@ const std::vector<std::string>& preset_names() {
 }
 
 const std::vector<std::string>& scheme_combinations() {
-  static const std::vector<std::string> combos{"summation+bl7", "summation+bl20", "continuity+bl20",
-                                               "continuity+bl59"};
+  static const std::vector<std::string> combos{
+      "summation+bl7+none",    "summation+bl7+shepard",    "summation+bl7+first_order",
+      "summation+bl20+none",   "summation+bl20+shepard",   "summation+bl20+first_order",
+      "continuity+bl20+none",  "continuity+bl20+gradient", "continuity+bl20+shepard",
+      "continuity+bl20+mixed", "continuity+bl59+mixed"};
   return combos;
 }
 
@@ -49,8 +52,9 @@ std::unique_ptr<Scheme<D>> make_scheme(const SchemeRows& rows, KernelKind kernel
   auto scheme = with_kernel<D>(
       kernel, [&](auto k) { return make_kernel_scheme<D, decltype(k)>(rows, phys); });
   if (!scheme)
-    throw InputError(fmt::format("no scheme combines density '{}' with force '{}'; available: {}",
-                                 rows.density, rows.force, fmt::join(scheme_combinations(), ", ")));
+    throw InputError(fmt::format(
+        "no scheme combines density '{}', force '{}' and correction '{}'; available: {}",
+        rows.density, rows.force, rows.correction, fmt::join(scheme_combinations(), ", ")));
   return scheme;
 }
 

@@ -2,8 +2,10 @@
 //   preset "standard"     = BL (1) + force BL (7)  (variationally consistent, BL 2.4.1);
 //   preset "inconsistent" = BL (1) + force BL (8) with "+" (= BL (20)): the mismatched pair of
 //                           BL Fig 10 (antisymmetric, so it still keeps linear momentum).
+// The density may be interpolated with a corrected kernel (Density): the Shepard correction
+// BL (53) or the first-order correction BL (47)-(52); the force keeps its grad W.
 // Algorithm, one step:
-//   1. sweep: rho_a = sum_b m_b W_ab                       BL (1)
+//   1. sweep: rho_a = sum_b m_b W_ab (or W~_ab)            BL (1), (53), (47)
 //   2. p_a = kappa((rho_a/rho0)^gamma - 1) (in the same pass as the sweep's finish);
 //      refresh ghosts                                       BL (60)
 //   3. sweep (if mu > 0): grad v_a                          BL (22)
@@ -11,12 +13,15 @@
 #pragma once
 
 #include "flume/equations/density_summation.hpp"
+#include "flume/equations/density_summation_first_order_bl47.hpp"
+#include "flume/equations/density_summation_shepard_bl53.hpp"
 #include "flume/schemes/common_steps.hpp"
 #include "flume/schemes/scheme.hpp"
 
 namespace flume {
 
-template <int D, class Kernel, template <int> class Force>
+template <int D, class Kernel, template <int> class Force,
+          template <int> class Density = DensitySummation>
 class SummationScheme final : public Scheme<D> {
  public:
   explicit SummationScheme(Physics<D> phys) : phys_(std::move(phys)) {}
@@ -26,7 +31,7 @@ class SummationScheme final : public Scheme<D> {
 
   void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                              const Halo<D>& halo) const override {
-    DensitySummation<D> density{ps};
+    Density<D> density{ps};
     // The equation of state in the same pass as the density's finish (sweep_then).
     sweep_then<D, Kernel>(
         ctx, ps, "density", [&](std::size_t i) { pressure_at(ps, phys_, i); }, density);

@@ -1,0 +1,51 @@
+// The smallest singular value of a small square matrix: sigma_min(M) = sqrt(lambda_min(M^T M)).
+// What decides whether a correction matrix can be inverted usefully
+// (corrected_velocity_gradient.hpp): unlike the determinant, it does not shrink with the dimension
+// (a 2D corner and a 3D corner both have sigma_min ~ 1/2, their determinants 1/4 and 1/8), and it
+// measures how close M is to the nearest singular matrix (Eckart-Young), which a determinant does
+// not.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "flume/core/vec.hpp"
+
+namespace flume {
+
+// The eigenvalues of a symmetric matrix A, smallest first (closed forms: the quadratic in 2D,
+// the trigonometric solution of the characteristic cubic in 3D).
+template <int D>
+double smallest_symmetric_eigenvalue(const Mat<D>& a) {
+  if constexpr (D == 1) {
+    return a(0, 0);
+  } else if constexpr (D == 2) {
+    const double mean = 0.5 * (a(0, 0) + a(1, 1));
+    const double half_diff = 0.5 * (a(0, 0) - a(1, 1));
+    return mean - std::hypot(half_diff, a(0, 1));
+  } else {
+    // A = q I + p B with q = tr A / 3 and B of unit "radius": the eigenvalues are
+    // q + 2 p cos(phi + 2 pi k / 3), phi = acos(det B / 2) / 3; the smallest has k = 1.
+    const double q = trace(a) / 3.0;
+    const double off = a(0, 1) * a(0, 1) + a(0, 2) * a(0, 2) + a(1, 2) * a(1, 2);
+    const double d0 = a(0, 0) - q, d1 = a(1, 1) - q, d2 = a(2, 2) - q;
+    const double p2 = (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0;
+    if (p2 <= 0.0) return q;  // a multiple of the identity
+    const double p = std::sqrt(p2);
+    Mat<3> b = a;
+    for (int k = 0; k < 3; ++k)
+      b(k, k) -= q;
+    b *= 1.0 / p;
+    const double r = std::clamp(0.5 * determinant(b), -1.0, 1.0);
+    const double phi = std::acos(r) / 3.0;
+    return q + 2.0 * p * std::cos(phi + 2.0 * std::numbers::pi / 3.0);
+  }
+}
+
+template <int D>
+double smallest_singular_value(const Mat<D>& m) {
+  return std::sqrt(std::max(0.0, smallest_symmetric_eigenvalue(transpose(m) * m)));
+}
+
+}  // namespace flume
