@@ -1,6 +1,12 @@
 #include "flume/case/build_simulation.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
+#include <random>
+
+#include <fmt/format.h>
 
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
@@ -37,6 +43,151 @@ Physics<D> build_physics(const CaseSpec& spec) {
   return phys;
 }
 
+namespace {
+
+// Whether x lies inside the block's shape (the box itself, or the ellipsoid inscribed in it).
+template <int D>
+bool inside(const FluidBlock& block, const Vec<D>& x) {
+  if (block.shape == "box") return true;
+  double q = 0.0;
+  for (int k = 0; k < D; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    const double c = 0.5 * (block.min[kk] + block.max[kk]),
+                 r = 0.5 * (block.max[kk] - block.min[kk]);
+    q += (x[k] - c) * (x[k] - c) / (r * r);
+  }
+  return q <= 1.0;
+}
+
+// The block's volume (area in 2D): the box's, or the inscribed ellipsoid's (pi/4 of the box's
+// in 2D, pi/6 in 3D).
+template <int D>
+double shape_volume(const FluidBlock& block) {
+  double v = 1.0;
+  for (int k = 0; k < D; ++k)
+    v *= block.max[static_cast<std::size_t>(k)] - block.min[static_cast<std::size_t>(k)];
+  if (block.shape == "box") return v;
+  return v * (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0);
+}
+
+// The positions of a block's particles: cell centres of spacing dx inside the shape (a box
+// of width L holds floor(L/dx) per row; the tolerance absorbs the round-off of spacings given
+// as L/n), or `count` points drawn uniformly inside it (rejection from the box).
+template <int D>
+std::vector<Vec<D>> block_positions(const FluidBlock& block, double dx) {
+  std::vector<Vec<D>> xs;
+  if (block.layout == "random") {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(block.seed));
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    xs.reserve(static_cast<std::size_t>(block.count));
+    // Candidates closer than min_distance to an accepted point are drawn again (random
+    // sequential addition), found through a grid of cells of that size.
+    const double d = block.min_distance * dx;
+    std::array<long, D> cells{};
+    long n_cells = 1;
+    for (int k = 0; k < D; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      cells[kk] =
+          d > 0.0 ? std::max(1L, static_cast<long>((block.max[kk] - block.min[kk]) / d)) : 1L;
+      n_cells *= cells[kk];
+    }
+    std::vector<std::vector<std::size_t>> grid(static_cast<std::size_t>(n_cells));
+    const auto cell_of = [&](const Vec<D>& x, std::array<long, D>& c) {
+      for (int k = 0; k < D; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        const double f = (x[k] - block.min[kk]) / (block.max[kk] - block.min[kk]);
+        c[kk] =
+            std::clamp(static_cast<long>(f * static_cast<double>(cells[kk])), 0L, cells[kk] - 1);
+      }
+    };
+    const auto index = [&](const std::array<long, D>& c) {
+      long i = 0;
+      for (int k = D - 1; k >= 0; --k)
+        i = i * cells[static_cast<std::size_t>(k)] + c[static_cast<std::size_t>(k)];
+      return static_cast<std::size_t>(i);
+    };
+    const auto too_close = [&](const Vec<D>& x) {
+      if (d <= 0.0) return false;
+      std::array<long, D> c{};
+      cell_of(x, c);
+      long around = 1;
+      for (int k = 0; k < D; ++k)
+        around *= 3;
+      for (long n = 0; n < around; ++n) {
+        std::array<long, D> o = c;
+        long rest = n;
+        bool valid = true;
+        for (int k = 0; k < D; ++k) {
+          const auto kk = static_cast<std::size_t>(k);
+          o[kk] += rest % 3 - 1;
+          rest /= 3;
+          valid = valid && o[kk] >= 0 && o[kk] < cells[kk];
+        }
+        if (!valid) continue;
+        for (const std::size_t j : grid[index(o)])
+          if (norm2(xs[j] - x) < d * d) return true;
+      }
+      return false;
+    };
+    long draws = 0;
+    while (static_cast<long>(xs.size()) < block.count) {
+      if (++draws > 10000 * block.count)
+        throw InputError(
+            fmt::format("fluid block: cannot place {} particles {} spacings apart (placed {})",
+                        block.count, block.min_distance, xs.size()));
+      Vec<D> x;
+      for (int k = 0; k < D; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        x[k] = block.min[kk] + u(rng) * (block.max[kk] - block.min[kk]);
+      }
+      if (!inside<D>(block, x) || too_close(x)) continue;
+      std::array<long, D> c{};
+      cell_of(x, c);
+      grid[index(c)].push_back(xs.size());
+      xs.push_back(x);
+    }
+    // Moved as a whole so that the centre of mass (equal masses) is the shape's centre: a body
+    // that starts symmetric in momentum for a velocity field odd about the centre.
+    Vec<D> mean;
+    for (const auto& x : xs)
+      mean += x;
+    mean = mean * (1.0 / static_cast<double>(xs.size()));
+    for (auto& x : xs)
+      for (int k = 0; k < D; ++k)
+        x[k] += 0.5 * (block.min[static_cast<std::size_t>(k)] +
+                       block.max[static_cast<std::size_t>(k)]) -
+                mean[k];
+    return xs;
+  }
+  std::array<long, D> count{};
+  long total = 1;
+  for (int k = 0; k < D; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    count[kk] = static_cast<long>(std::floor((block.max[kk] - block.min[kk]) / dx + 1e-6));
+    total *= count[kk];
+  }
+  for (long n = 0; n < total; ++n) {
+    long rest = n;
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      // A box's lattice starts dx/2 inside min (a wall there keeps its half-spacing gap); an
+      // ellipsoid's is centred on it, so that a symmetric body starts symmetric (no net
+      // momentum from a velocity field that is odd about the centre).
+      const double first =
+          block.shape == "box"
+              ? block.min[kk]
+              : 0.5 * (block.min[kk] + block.max[kk] - static_cast<double>(count[kk]) * dx);
+      x[k] = first + (static_cast<double>(rest % count[kk]) + 0.5) * dx;
+      rest /= count[kk];
+    }
+    if (inside<D>(block, x)) xs.push_back(x);
+  }
+  return xs;
+}
+
+}  // namespace
+
 template <int D>
 ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   ParticleSet<D> ps;
@@ -47,41 +198,32 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   const double g = norm(phys.gravity);
   const double h = spec.h_over_dx * dx;
   std::int64_t next_id = 0;
-  // A block of width L holds floor(L/dx) particles per row; the tolerance absorbs the round-off
-  // of spacings given as L/n.
-  auto counts = [dx](const FluidBlock& block) {
-    std::array<long, D> count{};
-    for (int k = 0; k < D; ++k)
-      count[k] = static_cast<long>(std::floor((block.max[k] - block.min[k]) / dx + 1e-6));
-    return count;
-  };
+  std::vector<std::vector<Vec<D>>> positions;
   std::size_t particles = 0;  // reserved up front: growth by doubling would inflate the peak memory
   for (const auto& block : spec.blocks) {
-    std::size_t n = 1;
-    for (const long c : counts(block))
-      n *= static_cast<std::size_t>(c);
-    particles += n;
+    positions.push_back(block_positions<D>(block, dx));
+    particles += positions.back().size();
   }
   ps.reserve(particles);
-  for (const auto& block : spec.blocks) {
-    const std::array<long, D> count = counts(block);
-    long total = 1;
-    for (int k = 0; k < D; ++k)
-      total *= count[k];
+  for (std::size_t b = 0; b < spec.blocks.size(); ++b) {
+    const FluidBlock& block = spec.blocks[b];
     const double top = block.max[D - 1];
-    std::array<long, D> idx{};
-    for (long n = 0; n < total; ++n) {
-      long rest = n;
-      for (int k = 0; k < D; ++k) {
-        idx[k] = rest % count[k];
-        rest /= count[k];
-      }
-      Vec<D> x;
-      for (int k = 0; k < D; ++k)
-        x[k] = block.min[k] + (static_cast<double>(idx[k]) + 0.5) * dx;
+    // A lattice particle carries the volume of its cell; random ones share the shape's.
+    const double volume = block.layout == "random"
+                              ? shape_volume<D>(block) / static_cast<double>(block.count)
+                              : std::pow(dx, D);
+    Vec<D> centre;
+    for (int k = 0; k < D; ++k)
+      centre[k] =
+          0.5 * (block.min[static_cast<std::size_t>(k)] + block.max[static_cast<std::size_t>(k)]);
+    for (const Vec<D>& x : positions[b]) {
+      Vec<D> v = to_vec<D>(block.velocity);
+      for (int r = 0; r < D; ++r)
+        for (int c = 0; c < D; ++c)
+          v[r] += block.velocity_gradient[static_cast<std::size_t>(r * D + c)] * (x[c] - centre[c]);
       const double rho =
           block.hydrostatic ? phys.eos.hydrostatic_density(g * (top - x[D - 1])) : phys.eos.rho0;
-      ps.add_real(next_id++, x, to_vec<D>(block.velocity), rho * std::pow(dx, D), rho, h);
+      ps.add_real(next_id++, x, v, rho * volume, rho, h);
     }
   }
   return ps;

@@ -177,6 +177,22 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     fb.max = r.vec(key + ".max");
     fb.velocity = r.vec(key + ".velocity");
     fb.hydrostatic = r.boolean(key + ".hydrostatic");
+    fb.velocity_gradient = r.vec(key + ".velocity_gradient");
+    if (fb.velocity_gradient.size() != static_cast<std::size_t>(dim * dim))
+      r.fail(
+          key + ".velocity_gradient",
+          fmt::format("must have {} entries (a {} x {} matrix, row-major)", dim * dim, dim, dim));
+    fb.shape = r.one_of(key + ".shape", {"box", "ellipsoid"});
+    fb.layout = r.one_of(key + ".layout", {"lattice", "random"});
+    fb.count = r.integer(key + ".count");
+    fb.seed = r.integer(key + ".seed");
+    if (fb.layout == "random" && !(fb.count >= 1 && fb.count <= 100'000'000))
+      r.fail(key + ".count",
+             fmt::format("= {}: a random layout needs 1 to 1e8 particles", fb.count));
+    if (fb.layout == "lattice" && fb.count != 0)
+      r.fail(key + ".count", "is for layout = \"random\" (a lattice's count follows the spacing)");
+    if (fb.seed < 0) r.fail(key + ".seed", fmt::format("= {}: must be >= 0", fb.seed));
+    fb.min_distance = r.in_range(key + ".min_distance", 0.0, 1.0);
     for (int k = 0; k < dim; ++k) {
       if (!(fb.min[k] < fb.max[k]))
         r.fail(key + ".max", fmt::format("must exceed min along {}", axis_name(k)));
@@ -216,6 +232,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
 
   s.surge_front = r.boolean("probes.surge_front");
   s.column_height = r.boolean("probes.column_height");
+  s.semi_axes = r.boolean("probes.semi_axes");
+  if (s.semi_axes && dim != 2) r.fail("probes.semi_axes", "is for 2D cases");
   s.floor_layer = r.positive("probes.floor_layer");
   s.wall_band = r.positive("probes.wall_band");
   s.detach_gap = r.positive("probes.detach_gap");
@@ -231,11 +249,24 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     for (std::size_t c = 0; c < curves->size(); ++c) {
       const std::string key = fmt::format("validation.curves[{}]", c);
       CurveCheck cc;
-      cc.probe = r.one_of(key + ".probe", {"surge_front", "column_height"});
+      cc.probe =
+          r.one_of(key + ".probe", {"surge_front", "column_height", "semi_axis_x", "semi_axis_y"});
+      const bool enabled = cc.probe == "surge_front"     ? s.surge_front
+                           : cc.probe == "column_height" ? s.column_height
+                                                         : s.semi_axes;
+      if (!enabled)
+        r.fail(key + ".probe",
+               fmt::format("= \"{}\": the case's [probes] do not measure it", cc.probe));
       cc.label = r.str(key + ".label");
-      cc.reference = file.parent_path() / r.str(key + ".reference");
-      if (!std::filesystem::exists(cc.reference))
-        r.fail(key + ".reference", fmt::format("file {} not found", cc.reference.string()));
+      const std::string ref = r.str(key + ".reference");
+      if (ref.starts_with("theory:")) {
+        // A reference solution computed by flume (validation/theory_reference.hpp).
+        cc.theory = r.one_of(key + ".reference", {"theory:elliptical_drop"}).substr(7);
+      } else {
+        cc.reference = file.parent_path() / ref;
+        if (!std::filesystem::exists(cc.reference))
+          r.fail(key + ".reference", fmt::format("file {} not found", cc.reference.string()));
+      }
       cc.reference_x = r.str(key + ".reference_x");
       cc.reference_y = r.str(key + ".reference_y");
       cc.source = r.str(key + ".source");
@@ -243,6 +274,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       cc.absolute = r.one_of(key + ".error", {"relative", "absolute"}) == "absolute";
       cc.tolerance = r.positive(key + ".tolerance");
       cc.quick_tolerance = r.positive(key + ".quick_tolerance");
+      cc.mean_tolerance = r.non_negative(key + ".mean_tolerance");
+      cc.quick_mean_tolerance = r.non_negative(key + ".quick_mean_tolerance");
       cc.gated = r.boolean(key + ".gated");
       s.curves.push_back(cc);
     }
@@ -262,9 +295,10 @@ toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
   // directory), so it names them by absolute path.
   if (auto* curves = t.at_path("validation.curves").as_array()) {
     for (std::size_t c = 0; c < curves->size() && c < spec.curves.size(); ++c)
-      curves->get(c)->as_table()->insert_or_assign(
-          "reference",
-          std::filesystem::absolute(spec.curves[c].reference).lexically_normal().string());
+      if (spec.curves[c].theory.empty())  // "theory:NAME" is kept as written
+        curves->get(c)->as_table()->insert_or_assign(
+            "reference",
+            std::filesystem::absolute(spec.curves[c].reference).lexically_normal().string());
   }
   return t;
 }

@@ -69,6 +69,8 @@ snapshot_interval = 0.05  # s between ParaView snapshots; 0 = none
 
 [probes]
 surge_front = false    # distance from domain.min along x to the leading particle on the floor
+semi_axes = false      # semi_axis_x, semi_axis_y (m): 2 sqrt(<(x - <x>)^2>) mass-weighted, the
+                       # semi-axes of a uniform ellipse with those second moments (2D)
 column_height = false  # height of the water at the x_min wall
 floor_layer = 2.0      # surge front: particles within this many spacings of the floor count
 wall_band = 2.0        # column height: particles within this many spacings of the wall count
@@ -81,13 +83,24 @@ time_scale = 1.0       # s; the references' time is t / time_scale
 notes = []             # the papers' own numbers, quoted in the report
 variants = []          # "KEY=VALUE": other configurations run and reported beside the case
 
-# [[fluid_blocks]]: at least one; each a box of fluid on the particle lattice:
-#   min = {zero}, max = {one} (m), velocity = {zero} (m/s), hydrostatic = true
+# [[fluid_blocks]]: at least one; each a body of fluid:
+#   min = {zero}, max = {one} (m), velocity = {zero} (m/s, at the centre), hydrostatic = true,
+#   velocity_gradient = D x D zeros, row-major (1/s): v = velocity + G (x - centre),
+#   shape = "box" (or "ellipsoid": the ellipse or ellipsoid inscribed in min, max),
+#   layout = "lattice" (particles at the cell centres of spacing dx inside the shape, mass
+#   rho dx^D) or "random" (count particles uniformly inside the shape from seed, equal masses
+#   rho volume / count; spacing then sets only h), count = 0, seed = 1, min_distance = 0.0
+#   (spacings, at most 1: a random candidate closer than that to a placed particle is drawn
+#   again; 0 = independent uniform positions). A random body is moved as a whole so that its
+#   centre of mass is the shape's centre.
 # [[validation.curves]]: a probe compared with a reference curve:
 #   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
 #   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
 #   error = "relative" (or "absolute": in the reference's units), tolerance = 0.1,
 #   quick_tolerance = 0.1 (the largest error allowed over the compared points),
+#   mean_tolerance = 0.0, quick_mean_tolerance = 0.0 (the mean error allowed; 0 = not checked),
+#   reference = "theory:elliptical_drop": the exact solution of BL 5.2 computed by flume, with
+#   columns t (s), a and b (m), from the first fluid block (radius, velocity gradient),
 #   gated = true (false: the curve is reported beside the others but cannot fail validation)
 )toml",
                      fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
@@ -103,10 +116,13 @@ const std::string& case_defaults_toml(int dimension) {
 
 const std::string& fluid_block_defaults(int dimension) {
   static const std::string d2 =
-      "min = [0.0, 0.0]\nmax = [1.0, 1.0]\nvelocity = [0.0, 0.0]\nhydrostatic = true\n";
+      "min = [0.0, 0.0]\nmax = [1.0, 1.0]\nvelocity = [0.0, 0.0]\nhydrostatic = true\n"
+      "velocity_gradient = [0.0, 0.0, 0.0, 0.0]\nshape = \"box\"\nlayout = \"lattice\"\n"
+      "count = 0\nseed = 1\nmin_distance = 0.0\n";
   static const std::string d3 =
       "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
-      "hydrostatic = true\n";
+      "hydrostatic = true\nvelocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
+      "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n";
   return dimension == 3 ? d3 : d2;
 }
 
@@ -114,7 +130,7 @@ const std::string& curve_defaults() {
   static const std::string d =
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
-      "quick_tolerance = 0.1\ngated = true\n";
+      "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n";
   return d;
 }
 

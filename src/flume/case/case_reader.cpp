@@ -121,8 +121,16 @@ class Checker {
       const auto* darr = def.as_array();
       const bool numeric = !darr->empty() && darr->get(0)->is_number();
       if (numeric) {
-        if (arr->size() != static_cast<std::size_t>(dim_) || !all_numbers(*arr))
-          fail(key, fmt::format("must be an array of {} numbers (one per dimension)", dim_));
+        // A default of D x D numbers is a matrix (row-major), of D a vector.
+        const std::size_t want = darr->size() == static_cast<std::size_t>(dim_ * dim_) && dim_ > 1
+                                     ? static_cast<std::size_t>(dim_ * dim_)
+                                     : static_cast<std::size_t>(dim_);
+        if (arr->size() != want || !all_numbers(*arr))
+          fail(key, want == static_cast<std::size_t>(dim_)
+                        ? fmt::format("must be an array of {} numbers (one per dimension)", dim_)
+                        : fmt::format("must be an array of {} numbers (a {} x {} matrix, "
+                                      "row-major)",
+                                      want, dim_, dim_));
       } else if (!all_strings(*arr)) {
         fail(key, "must be an array of strings");
       }

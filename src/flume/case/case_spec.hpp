@@ -11,8 +11,16 @@ namespace flume {
 
 struct FluidBlock {
   std::vector<double> min, max;  // m
-  std::vector<double> velocity;  // m/s
-  bool hydrostatic = true;       // initial density in hydrostatic equilibrium under gravity
+  std::vector<double> velocity;  // m/s, at the block's centre
+  // d v / d x, row-major D x D, 1/s: v = velocity + G (x - centre) (the elliptical drop's
+  // (-A x, A y) of BL 5.2)
+  std::vector<double> velocity_gradient;
+  bool hydrostatic = true;         // initial density in hydrostatic equilibrium under gravity
+  std::string shape = "box";       // "box" or "ellipsoid" (inscribed in min, max)
+  std::string layout = "lattice";  // "lattice" (spacing dx) or "random" (count, seed)
+  long count = 0;                  // particles of a random layout
+  long seed = 1;                   // its random seed (std::mt19937_64)
+  double min_distance = 0.0;       // spacings: no two random particles closer (0 = Poisson)
 };
 
 // A probe curve compared with a reference data set (validate).
@@ -20,6 +28,7 @@ struct CurveCheck {
   std::string probe;                // probes.csv column
   std::string label;                // for the report
   std::filesystem::path reference;  // CSV, resolved against the case file's folder
+  std::string theory;               // or a solution flume computes: "elliptical_drop"
   std::string reference_x;          // its column of dimensionless time
   std::string reference_y;          // its column of the dimensionless probe value
   std::string source;               // where the reference comes from
@@ -27,6 +36,8 @@ struct CurveCheck {
   bool absolute = false;            // error in the reference's units instead of relative
   double tolerance = 0.1;           // max error allowed over the compared points
   double quick_tolerance = 0.1;
+  double mean_tolerance = 0.0;  // bound on the mean error over the points; 0 = not checked
+  double quick_mean_tolerance = 0.0;
   bool gated = true;  // false: reported beside the others, never fails validation
 };
 
@@ -76,6 +87,7 @@ struct CaseSpec {
   // [probes]
   bool surge_front = false;
   bool column_height = false;
+  bool semi_axes = false;    // semi_axis_x, semi_axis_y from the cloud's second moments (2D)
   double floor_layer = 2.0;  // spacings
   double wall_band = 2.0;    // spacings
   double detach_gap = 3.0;   // spacings

@@ -8,12 +8,14 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "flume/case/build_simulation.hpp"
 #include "flume/core/error.hpp"
 #include "flume/io/atomic_file.hpp"
 #include "flume/probes/column_height.hpp"
 #include "flume/probes/fluid_body.hpp"
+#include "flume/probes/semi_axes.hpp"
 #include "flume/probes/surge_front.hpp"
 #include "flume/run/run_output.hpp"
 #include "flume/sim/diagnostics.hpp"
@@ -53,15 +55,30 @@ std::vector<std::string> probe_columns(const CaseSpec& spec) {
   std::vector<std::string> cols{"time"};
   if (spec.surge_front) cols.push_back("surge_front");
   if (spec.column_height) cols.push_back("column_height");
+  if (spec.semi_axes) cols.insert(cols.end(), {"semi_axis_x", "semi_axis_y"});
   return cols;
 }
 
+// The semi-axes probe of a 2D case: nominal semi-axes from its first fluid block.
+std::optional<SemiAxesProbe> semi_axes_probe(const CaseSpec& spec) {
+  if (!spec.semi_axes) return std::nullopt;
+  const auto& b = spec.blocks.front();
+  return SemiAxesProbe({0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1])});
+}
+
 template <int D>
-std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim) {
+std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim,
+                              std::optional<SemiAxesProbe>& semi_axes) {
   const auto& ps = sim.particles();
   const double wall = spec.domain_min[0];
   const double floor = spec.domain_min[D - 1];
   std::vector<double> row{sim.time()};
+  if constexpr (D == 2) {
+    if (semi_axes) {
+      const auto ab = (*semi_axes)(ps);
+      row.insert(row.end(), ab.begin(), ab.end());
+    }
+  }
   if (!spec.surge_front && !spec.column_height) return row;
   const auto body = main_fluid_body(ps, spec.detach_gap * spec.spacing);
   if (spec.surge_front)
@@ -126,6 +143,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
   Progress progress(tty && !opt.quiet, spec.end_time);
 
   std::unique_ptr<Simulation<D>> sim;
+  auto semi_axes = semi_axes_probe(spec);
   try {
     sim = std::make_unique<Simulation<D>>(build_simulation<D>(spec));
   } catch (const SimulationError& e) {
@@ -144,7 +162,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
     auto record = [&] {
       out.add_diagnostics(diagnostics_row(sim->particles(), sim->physics(), sim->time(),
                                           sim->steps(), sim->last_dt()));
-      out.add_probes(probe_row(spec, *sim));
+      out.add_probes(probe_row(spec, *sim, semi_axes));
     };
     record();
     if (spec.snapshot_interval > 0.0) out.add_snapshot(0.0, snapshot_cloud(sim->particles()));

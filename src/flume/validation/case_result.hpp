@@ -20,10 +20,11 @@ struct SeriesResult {
 
 struct CaseResult {
   CaseSpec spec;
-  std::vector<SeriesResult> series;    // [0] is the case as written; then the variants
-  std::vector<double> tolerances;      // per curve (quick or full)
-  std::vector<std::string> plots;      // per curve: PNG file name, empty if plotting failed
-  std::vector<std::string> overrides;  // --set KEY=VALUE given to validate, in every run
+  std::vector<SeriesResult> series;     // [0] is the case as written; then the variants
+  std::vector<double> tolerances;       // per curve (quick or full): bound on the max error
+  std::vector<double> mean_tolerances;  // per curve: bound on the mean error (0 = none)
+  std::vector<std::string> plots;       // per curve: PNG file name, empty if plotting failed
+  std::vector<std::string> overrides;   // --set KEY=VALUE given to validate, in every run
 };
 
 // Max and mean of the errors of a curve.

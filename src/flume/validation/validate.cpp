@@ -13,6 +13,7 @@
 #include "flume/validation/bundled_cases.hpp"
 #include "flume/validation/case_result.hpp"
 #include "flume/validation/report.hpp"
+#include "flume/validation/theory_reference.hpp"
 
 namespace flume {
 
@@ -94,8 +95,10 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   base.insert(base.end(), opt.sets.begin(), opt.sets.end());
   cr.overrides = opt.sets;
   cr.spec = read_case(file, base);
-  for (const auto& check : cr.spec.curves)
+  for (const auto& check : cr.spec.curves) {
     cr.tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
+    cr.mean_tolerances.push_back(opt.quick ? check.quick_mean_tolerance : check.mean_tolerance);
+  }
 
   std::vector<std::pair<std::string, std::vector<std::string>>> configs{{cr.spec.preset, base}};
   for (const auto& v : cr.spec.variants) {
@@ -116,7 +119,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     if (s.run.completed) {
       const auto t = probes.back().column("time");
       for (const auto& check : spec.curves) {
-        const auto ref = io::read_csv(check.reference);
+        const auto ref = curve_reference(spec, check);
         s.curves.push_back(compare_curve(
             t, probes.back().column(check.probe), ref.column(check.reference_x),
             ref.column(check.reference_y), spec.time_scale, check.value_scale, check.absolute));
@@ -127,7 +130,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
     cr.plots.push_back(
         cr.series.front().run.completed
-            ? plot_curve(opt.out_dir, cr, c, probes, io::read_csv(cr.spec.curves[c].reference))
+            ? plot_curve(opt.out_dir, cr, c, probes, curve_reference(cr.spec, cr.spec.curves[c]))
             : std::string());
   return cr;
 }
@@ -161,6 +164,19 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
            {"tolerance", cr.tolerances[c]},
            {"gated", check.gated},
            {"pass", pass}});
+    }
+    if (cr.mean_tolerances[c] > 0.0 && !main.curves[c].empty()) {
+      const double mean = summarize(main.curves[c]).mean;
+      const bool pass = mean <= cr.mean_tolerances[c];
+      if (check.gated) all_pass = all_pass && pass;
+      rows.push_back({{"case", cr.spec.name},
+                      {"metric", fmt::format("{} mean error", check.probe)},
+                      {"value", mean},
+                      {"reference", nullptr},
+                      {"error", mean},
+                      {"tolerance", cr.mean_tolerances[c]},
+                      {"gated", check.gated},
+                      {"pass", pass}});
     }
   }
   return all_pass;
