@@ -20,7 +20,8 @@ namespace flume {
 
 // p_a = p(rho_a) and the local sound speed c_a of particle a.
 template <int D>
-[[gnu::always_inline]] inline void pressure_at(ParticleSet<D>& ps, const Physics<D>& phys, std::size_t a) {
+[[gnu::always_inline]] inline void pressure_at(ParticleSet<D>& ps, const Physics<D>& phys,
+                                               std::size_t a) {
   ps.p[a] = phys.eos.pressure(ps.rho[a]);
   ps.c[a] = phys.eos.sound_speed(ps.rho[a], ps.p[a]);
 }
