@@ -18,6 +18,8 @@ echo "dam break run:       $(pwd)/$run/  (diagnostics.csv, probes.csv, snapshots
 echo "surge front plot:    $(pwd)/validation/dam_break_surge_front.png"
 echo "column height plot:  $(pwd)/validation/dam_break_column_height.png"
 echo "validation report:   $(pwd)/validation/report.md"
-if [ "$verdict" -ne 0 ]; then
-  echo "(some metrics are outside their tolerance: the report says which and by how much)"
+if [ "$verdict" -eq 0 ]; then
+  echo "validation: PASSED (every gated metric within its tolerance)"
+else
+  echo "validation: FAILED (some metrics are outside their tolerance: the report says which and by how much)"
 fi

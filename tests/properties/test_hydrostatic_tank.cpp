@@ -1,10 +1,11 @@
 // Still water in a tank (W-3 of spec/cases.md, the acceptance test): started from the
-// exact hydrostatic density of the Tait EOS, the water must stay at rest with a bottom pressure
-// within 2 % of rho0 g H. Checked for the continuity preset: with the summation density BL (1)
-// the particles at a free surface miss half their kernel support, their density falls well below
-// rho0 and the Tait EOS puts them in strong tension, so still water is not an equilibrium of the
-// standard preset (the surface layer collapses); that is a property of BL (1), not a bug. Also
-// checked with the Shepard density filter W (6.3) every 40 steps, as W runs it.
+// hydrostatic density of the Tait EOS (the column integrated), the water must stay at rest with
+// a bottom pressure within 1 % of rho0 g H (the integrated column's own bed pressure is 0.25 %
+// above rho0 g H: its compression weighs). Checked for the continuity preset: with the summation
+// density BL (1) the particles at a free surface miss half their kernel support, their density
+// falls well below rho0 and the Tait EOS puts them in strong tension, so still water is not an
+// equilibrium of the standard preset (the surface layer collapses); that is a property of BL (1),
+// not a bug. Also checked with the Shepard density filter W (6.3) every 40 steps, as W runs it.
 #include <gtest/gtest.h>
 
 #include <tuple>
@@ -52,11 +53,12 @@ TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
   const auto spec = test::spec_from(tank_toml(preset, shepard_every));
   auto sim = build_simulation<2>(spec);
   const double g = 9.81, rho0 = spec.rho0;
-  // Bottom pressure as a gauge reads it: each particle's pressure in the three bottom rows
-  // extrapolated to the floor with the hydrostatic gradient, averaged over the rows (the SPH
-  // pressure of a continuity-density scheme carries a few-percent row-to-row noise that a kernel-
-  // sized gauge smooths out) and over the last 0.1 s (sampled every step: the start-up acoustic
-  // oscillation, period 4H/c0 = 0.03 s, averages out).
+  // Bottom pressure as a gauge reads it: each particle's pressure in the four bottom rows
+  // extrapolated to the floor with the hydrostatic gradient, averaged over the rows and over the
+  // last 0.1 s (sampled every step: the start-up acoustic oscillation, period 4H/c0 = 0.03 s,
+  // averages out). Four rows, an even number: the pressure carries a few-percent odd-even
+  // row-to-row mode, which a gradient exact for linear fields (CSPH) cannot see (the rows above
+  // and below a particle cancel), so it persists; three rows (two of one sign) read it as +1.3 %.
   double sum = 0.0, vmax = 0.0;
   long count = 0;
   while (sim.time() < spec.end_time) {
@@ -65,7 +67,7 @@ TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
     const auto& ps = sim.particles();
     for (std::size_t i = 0; i < ps.n_real; ++i) {
       vmax = std::max(vmax, norm(ps.v[i]));
-      if (ps.x[i][1] < 3 * kDx && ps.x[i][0] > 0.02 && ps.x[i][0] < 0.18) {
+      if (ps.x[i][1] < 4 * kDx && ps.x[i][0] > 0.02 && ps.x[i][0] < 0.18) {
         sum += ps.p[i] + rho0 * g * ps.x[i][1];
         ++count;
       }
@@ -73,8 +75,9 @@ TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
   }
   ASSERT_GT(count, 1000);
   const double p_bottom = sum / static_cast<double>(count);
-  // The tolerance: 2 % of rho0 g H.
-  EXPECT_NEAR(p_bottom, rho0 * g * kH, 0.02 * rho0 * g * kH) << preset << " " << shepard_every;
+  // The tolerance: 1 % of rho0 g H (measured: continuity -0.65 %, csph +0.33 %, continuity
+  // with the filter -0.65 %).
+  EXPECT_NEAR(p_bottom, rho0 * g * kH, 0.01 * rho0 * g * kH) << preset << " " << shepard_every;
   // At rest: spurious velocities far below the free-fall speed sqrt(2 g H) = 1.4 m/s.
   EXPECT_LT(vmax, 0.05 * std::sqrt(2 * g * kH)) << preset << " " << shepard_every;
 }

@@ -112,5 +112,31 @@ TEST(CaseReader, BadOverridesAndSyntax) {
   expect_one_line_with(error_of("[case]\nname = \"\"\n"), {"case.name", "required"});
 }
 
+// [[moving_walls]]: a wall side with a prescribed motion (the bore's push wall). The domain of
+// kValid is 4 a = 0.2286 m long and the run 0.01 s.
+TEST(CaseReader, MovingWalls) {
+  const std::string piston = kValid + "\n[[moving_walls]]\nside = \"x_max\"\nvelocity = -1.0\n";
+  const auto spec = test::spec_from(piston);
+  ASSERT_EQ(spec.moving_walls.size(), 1u);
+  EXPECT_EQ(spec.moving_walls[0].axis, 0);
+  EXPECT_EQ(spec.moving_walls[0].side, 1);
+  EXPECT_EQ(spec.moving_walls[0].velocity, -1.0);
+  EXPECT_NE(spec.resolved_toml.find("moving_walls"), std::string::npos);
+  EXPECT_EQ(test::spec_from(spec.resolved_toml).moving_walls.size(), 1u);
+  expect_one_line_with(error_of(piston, {"moving_walls[0].side=w_max"}),
+                       {"moving_walls[0].side", "x_min, x_max, y_min, y_max"});
+  expect_one_line_with(error_of(piston, {"boundaries.x_max=open"}),
+                       {"moving_walls[0].side", "open"});
+  expect_one_line_with(error_of(piston, {"moving_walls[0].amplitude=0.01"}),
+                       {"moving_walls[0].period", "> 0"});
+  // 30 m/s for 0.01 s is 0.3 m: through the far wall.
+  expect_one_line_with(error_of(piston, {"moving_walls[0].velocity=-30.0"}),
+                       {"moving_walls[0].velocity", "opposite side"});
+  expect_one_line_with(error_of(piston + "\n[[moving_walls]]\nside = \"x_max\"\n"),
+                       {"moving_walls[1].side", "two entries"});
+  expect_one_line_with(error_of(piston, {"moving_walls[0].speed=1.0"}),
+                       {"moving_walls[0].speed", "unknown key"});
+}
+
 }  // namespace
 }  // namespace flume

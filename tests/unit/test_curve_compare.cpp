@@ -1,5 +1,6 @@
 // Unit tests of the probe-versus-reference comparison (src/flume/validation/curve_compare.*):
-// linear interpolation, and compare_curve's scaling, windowing and relative errors.
+// linear interpolation, and compare_curve's scaling, windowing and relative errors; the mean and
+// the least-squares slope over a window (compare_over_window).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,6 +108,61 @@ TEST(CurveCompare, EmptyProbeOrReferenceGivesNoPoints) {
   EXPECT_TRUE(compare_curve({0.0, 1.0}, {1.0, 1.0}, {}, {}, 1.0, 1.0).empty());
   // A reference entirely after the simulated window.
   EXPECT_TRUE(compare_curve({0.0, 1.0}, {1.0, 1.0}, {2.0, 3.0}, {1.0, 1.0}, 1.0, 1.0).empty());
+}
+
+// A probe x(t) = 0.1 + 0.9 t + 0.01 sin(50 t) against a reference front v t with v = 0.85 over
+// t in [0.48, 0.6]: the slope compared is the probe's least-squares slope at the reference's
+// points, computed here independently with the closed form; the mean likewise.
+TEST(CurveCompare, WindowStatisticsAreTheMeanAndTheLeastSquaresSlope) {
+  std::vector<double> t, y, rx, ry;
+  for (int k = 0; k <= 600; ++k) {
+    t.push_back(0.001 * k);
+    y.push_back(0.1 + 0.9 * t.back() + 0.01 * std::sin(50.0 * t.back()));
+  }
+  for (int k = 0; k <= 20; ++k) {
+    rx.push_back(0.03 * k);
+    ry.push_back(0.85 * rx.back());
+  }
+  // The reference points in [0.48, 0.6]: 0.48, 0.51, ..., 0.6 (5 points).
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < rx.size(); ++k) {
+    if (rx[k] < 0.48 || rx[k] > 0.6) continue;
+    const double v = interpolate(t, y, rx[k]);
+    sx += rx[k];
+    sy += v;
+    sxx += rx[k] * rx[k];
+    sxy += rx[k] * v;
+    ++n;
+  }
+  ASSERT_EQ(n, 5);
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const auto s =
+      compare_over_window(t, y, rx, ry, 1.0, 1.0, false, CurveStatistic::slope, 0.48, 0.6);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_NEAR(s[0].value, slope, 1e-12);  // two formulas of the same sums: round-off
+  EXPECT_NEAR(s[0].reference, 0.85, 1e-12);
+  EXPECT_NEAR(s[0].error, std::abs(slope - 0.85) / 0.85, 1e-12);
+  EXPECT_NEAR(s[0].x, 0.6, 1e-15);
+  const auto m =
+      compare_over_window(t, y, rx, ry, 1.0, 1.0, false, CurveStatistic::mean, 0.48, 0.6);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_NEAR(m[0].value, sy / n, 1e-12);
+  EXPECT_NEAR(m[0].reference, 0.85 * 0.54, 1e-12);
+  // Pointwise over the window: just the five points.
+  EXPECT_EQ(compare_over_window(t, y, rx, ry, 1.0, 1.0, false, CurveStatistic::pointwise, 0.48, 0.6)
+                .size(),
+            5u);
+}
+
+TEST(CurveCompare, AWindowTheRunDidNotCoverIsNotSummarised) {
+  const std::vector<double> t{0.0, 0.5}, y{0.0, 0.5};
+  const std::vector<double> rx{0.4, 0.5, 0.6}, ry{0.4, 0.5, 0.6};
+  EXPECT_TRUE(
+      compare_over_window(t, y, rx, ry, 1.0, 1.0, false, CurveStatistic::slope, 0.4, 0.6).empty());
+  EXPECT_EQ(
+      compare_over_window(t, y, rx, ry, 1.0, 1.0, false, CurveStatistic::slope, 0.4, 0.5).size(),
+      1u);
 }
 
 }  // namespace

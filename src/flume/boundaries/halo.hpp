@@ -1,8 +1,9 @@
 // One mechanism for every ghost copy of a particle: mirror walls now, periodic images and MPI
 // halos later (Cabana's halo, LAMMPS's ghost atoms). A ghost is an affine image of a real
-// "source" particle, x' = S x + t with S diagonal (+-1), and its velocity is v' = P v with P
-// diagonal (+-1). Equations never know whether a neighbour is a ghost: the halo appends the
-// ghosts after the real particles and refreshes their fields from the sources between sweeps.
+// "source" particle, x' = S x + t with S diagonal (+-1), and its velocity is v' = P v + c with P
+// diagonal (+-1) and c the moving walls' part ((I - P) u_w, box_walls.hpp; zero for static ones).
+// Equations never know whether a neighbour is a ghost: the halo appends the ghosts after the real
+// particles and refreshes their fields from the sources between sweeps.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +19,7 @@ struct GhostMap {
   Vec<D> scale;              // S: +1 (shift) or -1 (reflection) per axis
   Vec<D> shift;              // t, m
   Vec<D> vscale;             // P: +1 or -1 per axis
+  Vec<D> vshift;             // c, m/s
 };
 
 template <int D>
@@ -60,8 +62,8 @@ class Halo {
       const std::size_t s = mp.source;
       ps.id[i] = ps.id[s];
       ps.x[i] = mul(mp.scale, ps.x[s]) + mp.shift;
-      ps.v[i] = mul(mp.vscale, ps.v[s]);
-      ps.v_half[i] = mul(mp.vscale, ps.v_half[s]);
+      ps.v[i] = mul(mp.vscale, ps.v[s]) + mp.vshift;
+      ps.v_half[i] = mul(mp.vscale, ps.v_half[s]) + mp.vshift;
       ps.m[i] = ps.m[s];
       ps.rho[i] = ps.rho[s];
       ps.h[i] = ps.h[s];
@@ -70,10 +72,12 @@ class Halo {
     }
   }
 
-  // Maps a velocity field (v or v_half) from the sources to their ghosts.
+  // Maps a velocity field (v or v_half) from the sources to their ghosts. A moving wall's c is
+  // that of the time the halo was built (t^n) for v_half too: exact for the bore's push wall
+  // (constant speed); for an oscillating wall an O(dt) lag in the ghosts' half-step velocity.
   void update_velocity(const ParticleSet<D>& ps, std::vector<Vec<D>>& f) const {
     for (std::size_t g = 0; g < maps_.size(); ++g)
-      f[ps.n_real + g] = mul(maps_[g].vscale, f[maps_[g].source]);
+      f[ps.n_real + g] = mul(maps_[g].vscale, f[maps_[g].source]) + maps_[g].vshift;
   }
 
   // The Shepard sum and gamma of BL (57) of a ghost: its neighbourhood is the mirror (or

@@ -239,6 +239,8 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
     walls.kind[k][0] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k)]);
     walls.kind[k][1] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k + 1)]);
   }
+  for (const auto& mw : spec.moving_walls)
+    walls.motion[mw.axis][mw.side] = WallMotion{mw.velocity, mw.amplitude, mw.period};
   auto scheme = make_scheme<D>(SchemeRows{spec.density, spec.force, spec.correction},
                                *kernel_from_name(spec.kernel), phys);
   SimulationConfig<D> config;

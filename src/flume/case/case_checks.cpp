@@ -166,6 +166,46 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       s.walls.push_back(r.one_of(std::string("boundaries.") + axis_name(k) + side,
                                  {"free_slip", "no_slip", "open"}));
 
+  if (const auto* moving = t.at_path("moving_walls").as_array()) {
+    std::vector<std::string> sides;
+    for (int k = 0; k < dim; ++k)
+      for (const char* side : {"_min", "_max"})
+        sides.push_back(std::string(axis_name(k)) + side);
+    for (std::size_t w = 0; w < moving->size(); ++w) {
+      const std::string key = fmt::format("moving_walls[{}]", w);
+      MovingWall mw;
+      const std::string side = r.one_of(key + ".side", sides);
+      const auto idx =
+          static_cast<std::size_t>(std::find(sides.begin(), sides.end(), side) - sides.begin());
+      mw.axis = static_cast<int>(idx / 2);
+      mw.side = static_cast<int>(idx % 2);
+      if (s.walls[idx] == "open")
+        r.fail(key + ".side",
+               fmt::format("= \"{}\": boundaries.{} is open; only a wall moves", side, side));
+      for (const auto& other : s.moving_walls)
+        if (other.axis == mw.axis && other.side == mw.side)
+          r.fail(key + ".side", fmt::format("= \"{}\": moves in two entries", side));
+      mw.velocity = r.num(key + ".velocity");
+      mw.amplitude = r.num(key + ".amplitude");
+      mw.period = r.non_negative(key + ".period");
+      if (!std::isfinite(mw.velocity)) r.fail(key + ".velocity", "must be finite");
+      if (!std::isfinite(mw.amplitude)) r.fail(key + ".amplitude", "must be finite");
+      if (mw.amplitude != 0.0 && !(mw.period > 0.0))
+        r.fail(key + ".period", "must be > 0 when amplitude is not 0");
+      // The wall must stay clear of the opposite side over the whole run (|s(t)| is at most
+      // |u| t_end + |A|): a piston that meets the far wall would squeeze the fluid to nothing.
+      const double reach = std::abs(mw.velocity) * s.end_time + std::abs(mw.amplitude);
+      const double width = s.domain_max[mw.axis] - s.domain_min[mw.axis];
+      if (reach > width - 2.0 * s.spacing)
+        r.fail(key + ".velocity",
+               fmt::format("with amplitude and case.end_time the wall travels up to {:.4g} m, "
+                           "which brings it within two spacings of the opposite side ({:.4g} m "
+                           "away)",
+                           reach, width));
+      s.moving_walls.push_back(mw);
+    }
+  }
+
   const auto* blocks = t.at_path("fluid_blocks").as_array();
   if (!blocks || blocks->empty())
     r.fail("fluid_blocks", "at least one [[fluid_blocks]] is required");
@@ -234,6 +274,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.column_height = r.boolean("probes.column_height");
   s.semi_axes = r.boolean("probes.semi_axes");
   if (s.semi_axes && dim != 2) r.fail("probes.semi_axes", "is for 2D cases");
+  s.bore = r.boolean("probes.bore");
+  if (s.bore && dim != 2) r.fail("probes.bore", "is for 2D cases");
   s.floor_layer = r.positive("probes.floor_layer");
   s.wall_band = r.positive("probes.wall_band");
   s.detach_gap = r.positive("probes.detach_gap");
@@ -249,11 +291,12 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     for (std::size_t c = 0; c < curves->size(); ++c) {
       const std::string key = fmt::format("validation.curves[{}]", c);
       CurveCheck cc;
-      cc.probe =
-          r.one_of(key + ".probe", {"surge_front", "column_height", "semi_axis_x", "semi_axis_y"});
-      const bool enabled = cc.probe == "surge_front"     ? s.surge_front
-                           : cc.probe == "column_height" ? s.column_height
-                                                         : s.semi_axes;
+      cc.probe = r.one_of(key + ".probe", {"surge_front", "column_height", "semi_axis_x",
+                                           "semi_axis_y", "bore_front", "bore_height"});
+      const bool enabled = cc.probe == "surge_front"      ? s.surge_front
+                           : cc.probe == "column_height"  ? s.column_height
+                           : cc.probe.starts_with("bore") ? s.bore
+                                                          : s.semi_axes;
       if (!enabled)
         r.fail(key + ".probe",
                fmt::format("= \"{}\": the case's [probes] do not measure it", cc.probe));
@@ -261,7 +304,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       const std::string ref = r.str(key + ".reference");
       if (ref.starts_with("theory:")) {
         // A reference solution computed by flume (validation/theory_reference.hpp).
-        cc.theory = r.one_of(key + ".reference", {"theory:elliptical_drop"}).substr(7);
+        cc.theory =
+            r.one_of(key + ".reference", {"theory:elliptical_drop", "theory:bore"}).substr(7);
       } else {
         cc.reference = file.parent_path() / ref;
         if (!std::filesystem::exists(cc.reference))
@@ -277,6 +321,14 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       cc.mean_tolerance = r.non_negative(key + ".mean_tolerance");
       cc.quick_mean_tolerance = r.non_negative(key + ".quick_mean_tolerance");
       cc.gated = r.boolean(key + ".gated");
+      const std::string stat = r.one_of(key + ".statistic", {"pointwise", "mean", "slope"});
+      cc.statistic = stat == "mean"    ? CurveStatistic::mean
+                     : stat == "slope" ? CurveStatistic::slope
+                                       : CurveStatistic::pointwise;
+      cc.window_from = r.non_negative(key + ".window_from");
+      cc.window_to = r.non_negative(key + ".window_to");
+      if (cc.window_to != 0.0 && !(cc.window_to > cc.window_from))
+        r.fail(key + ".window_to", "must exceed window_from (or be 0: to the last point)");
       s.curves.push_back(cc);
     }
   }

@@ -72,6 +72,8 @@ surge_front = false    # distance from domain.min along x to the leading particl
 semi_axes = false      # semi_axis_x, semi_axis_y (m): 2 sqrt(<(x - <x>)^2>) mass-weighted, the
                        # semi-axes of a uniform ellipse with those second moments (2D)
 column_height = false  # height of the water at the x_min wall
+bore = false           # bore_front (m from the x_min wall) and bore_height (m above the floor)
+                       # of a bore running away from the x_min wall (BL 5.4; probes/bore.hpp)
 floor_layer = 2.0      # surge front: particles within this many spacings of the floor count
 wall_band = 2.0        # column height: particles within this many spacings of the wall count
 detach_gap = 3.0       # spacings: particles farther than this from the main body of water are
@@ -93,6 +95,11 @@ variants = []          # "KEY=VALUE": other configurations run and reported besi
 #   (spacings, at most 1: a random candidate closer than that to a placed particle is drawn
 #   again; 0 = independent uniform positions). A random body is moved as a whole so that its
 #   centre of mass is the shape's centre.
+# [[moving_walls]]: a wall side that moves along its normal with a prescribed motion (the bore's
+#   push wall, BL 5.4; a piston wave-maker): side = "x_max" (any side that is a wall),
+#   velocity = 0.0 (m/s, along the axis), amplitude = 0.0 (m), period = 0.0 (s): the wall stands
+#   at its domain position + velocity t + amplitude sin(2 pi t / period). Its ghosts mirror the
+#   fluid's velocity relative to the wall.
 # [[validation.curves]]: a probe compared with a reference curve:
 #   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
 #   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
@@ -101,7 +108,12 @@ variants = []          # "KEY=VALUE": other configurations run and reported besi
 #   mean_tolerance = 0.0, quick_mean_tolerance = 0.0 (the mean error allowed; 0 = not checked),
 #   reference = "theory:elliptical_drop": the exact solution of BL 5.2 computed by flume, with
 #   columns t (s), a and b (m), from the first fluid block (radius, velocity gradient),
-#   gated = true (false: the curve is reported beside the others but cannot fail validation)
+#   reference = "theory:bore": BL (67)-(68) for the first fluid block's depth and speed, with
+#   columns t (s), front (m, v_s t from the x_min wall) and height (m),
+#   gated = true (false: the curve is reported beside the others but cannot fail validation),
+#   statistic = "pointwise" (every reference point), "mean" (the mean over the window) or
+#   "slope" (the least-squares slope over the window: a speed from a position),
+#   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point)
 )toml",
                      fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
                      fmt::arg("z_walls", z_walls));
@@ -126,11 +138,17 @@ const std::string& fluid_block_defaults(int dimension) {
   return dimension == 3 ? d3 : d2;
 }
 
+const std::string& moving_wall_defaults() {
+  static const std::string d = "side = \"\"\nvelocity = 0.0\namplitude = 0.0\nperiod = 0.0\n";
+  return d;
+}
+
 const std::string& curve_defaults() {
   static const std::string d =
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
-      "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n";
+      "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n"
+      "statistic = \"pointwise\"\nwindow_from = 0.0\nwindow_to = 0.0\n";
   return d;
 }
 

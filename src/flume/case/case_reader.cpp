@@ -17,12 +17,22 @@ namespace flume {
 
 const std::string& fluid_block_defaults(int dimension);
 const std::string& curve_defaults();
+const std::string& moving_wall_defaults();
 
 namespace {
 
 // Arrays of tables are not in the defaults table itself; each element has its own defaults.
+constexpr const char* kTableArrays[] = {"fluid_blocks", "moving_walls", "validation.curves"};
+
 bool is_table_array_key(const std::string& path) {
-  return path == "fluid_blocks" || path == "validation.curves";
+  return std::find(std::begin(kTableArrays), std::end(kTableArrays), path) !=
+         std::end(kTableArrays);
+}
+
+const std::string& element_defaults(const std::string& path, int dim) {
+  if (path == "fluid_blocks") return fluid_block_defaults(dim);
+  if (path == "moving_walls") return moving_wall_defaults();
+  return curve_defaults();
 }
 
 toml::table parse_defaults(const std::string& text) {
@@ -80,8 +90,7 @@ class Checker {
         const auto* arr = node.as_array();
         if (!arr || !arr->is_array_of_tables())
           fail(key, "must be an array of tables ([[" + key + "]])");
-        const toml::table elem_defaults =
-            parse_defaults(key == "fluid_blocks" ? fluid_block_defaults(dim_) : curve_defaults());
+        const toml::table elem_defaults = parse_defaults(element_defaults(key, dim_));
         for (std::size_t i = 0; i < arr->size(); ++i)
           check_known(*arr->get(i)->as_table(), elem_defaults, fmt::format("{}[{}]", key, i));
         continue;
@@ -152,7 +161,7 @@ class Checker {
     std::vector<std::string> keys;
     for (const auto& [k, v] : defaults)
       keys.emplace_back(k.str());
-    if (prefix.empty()) keys.insert(keys.end(), {"fluid_blocks"});
+    if (prefix.empty()) keys.insert(keys.end(), {"fluid_blocks", "moving_walls"});
     if (prefix == "validation") keys.insert(keys.end(), {"curves"});
     return fmt::format("{}", fmt::join(keys, ", "));
   }
@@ -200,8 +209,7 @@ void apply_override(toml::table& user, const toml::table& defaults, const std::s
                         "e.g. {}[0].KEY)",
                         file, key, walked, walked));
       tbl = arr->get(std::stoul(segs[s + 1]))->as_table();
-      elem_defaults =
-          parse_defaults(walked == "fluid_blocks" ? fluid_block_defaults(dim) : curve_defaults());
+      elem_defaults = parse_defaults(element_defaults(walked, dim));
       def = &elem_defaults;
       ++s;
       continue;
@@ -258,11 +266,10 @@ CaseSpec read_case_string(const std::string& text, const std::filesystem::path& 
   toml::table resolved = defaults;
   merge_into(resolved, user);
   // Each array-of-tables element gets its own defaults.
-  for (const char* key : {"fluid_blocks", "validation.curves"}) {
+  for (const char* key : kTableArrays) {
     toml::array* arr = resolved.at_path(key).as_array();
     if (!arr) continue;
-    const toml::table elem_defaults = parse_defaults(
-        std::string(key) == "fluid_blocks" ? fluid_block_defaults(dim) : curve_defaults());
+    const toml::table elem_defaults = parse_defaults(element_defaults(key, dim));
     toml::array filled;
     for (const auto& node : *arr) {
       toml::table full = elem_defaults;

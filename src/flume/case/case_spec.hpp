@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "flume/validation/curve_compare.hpp"
+
 namespace flume {
 
 struct FluidBlock {
@@ -21,6 +23,15 @@ struct FluidBlock {
   long count = 0;                  // particles of a random layout
   long seed = 1;                   // its random seed (std::mt19937_64)
   double min_distance = 0.0;       // spacings: no two random particles closer (0 = Poisson)
+};
+
+// A wall side moving along its normal (boundaries/wall_motion.hpp).
+struct MovingWall {
+  int axis = 0;
+  int side = 0;            // 0 lower, 1 upper
+  double velocity = 0.0;   // m/s
+  double amplitude = 0.0;  // m
+  double period = 0.0;     // s
 };
 
 // A probe curve compared with a reference data set (validate).
@@ -39,6 +50,10 @@ struct CurveCheck {
   double mean_tolerance = 0.0;  // bound on the mean error over the points; 0 = not checked
   double quick_mean_tolerance = 0.0;
   bool gated = true;  // false: reported beside the others, never fails validation
+  // What is compared (curve_compare.hpp) over the reference's x in [window_from, window_to].
+  CurveStatistic statistic = CurveStatistic::pointwise;
+  double window_from = 0.0;
+  double window_to = 0.0;  // 0 = to the reference's last point
 };
 
 struct CaseSpec {
@@ -78,6 +93,7 @@ struct CaseSpec {
   std::vector<double> domain_min, domain_max;  // m
   std::vector<std::string> walls;  // per axis lower, upper: "free_slip" | "no_slip" | "open"
   std::vector<FluidBlock> blocks;
+  std::vector<MovingWall> moving_walls;
 
   // [output]
   double output_interval = 0.01;    // s, diagnostics and probes
@@ -88,6 +104,7 @@ struct CaseSpec {
   bool surge_front = false;
   bool column_height = false;
   bool semi_axes = false;    // semi_axis_x, semi_axis_y from the cloud's second moments (2D)
+  bool bore = false;         // bore_front, bore_height (probes/bore.hpp)
   double floor_layer = 2.0;  // spacings
   double wall_band = 2.0;    // spacings
   double detach_gap = 3.0;   // spacings

@@ -13,6 +13,7 @@
 #include "flume/case/build_simulation.hpp"
 #include "flume/core/error.hpp"
 #include "flume/io/atomic_file.hpp"
+#include "flume/probes/bore.hpp"
 #include "flume/probes/column_height.hpp"
 #include "flume/probes/fluid_body.hpp"
 #include "flume/probes/semi_axes.hpp"
@@ -52,10 +53,12 @@ io::PointCloud snapshot_cloud(const ParticleSet<D>& ps) {
 }
 
 std::vector<std::string> probe_columns(const CaseSpec& spec) {
+  // The same order as probe_row's.
   std::vector<std::string> cols{"time"};
+  if (spec.semi_axes) cols.insert(cols.end(), {"semi_axis_x", "semi_axis_y"});
   if (spec.surge_front) cols.push_back("surge_front");
   if (spec.column_height) cols.push_back("column_height");
-  if (spec.semi_axes) cols.insert(cols.end(), {"semi_axis_x", "semi_axis_y"});
+  if (spec.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
   return cols;
 }
 
@@ -79,7 +82,7 @@ std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim,
       row.insert(row.end(), ab.begin(), ab.end());
     }
   }
-  if (!spec.surge_front && !spec.column_height) return row;
+  if (!spec.surge_front && !spec.column_height && !spec.bore) return row;
   const auto body = main_fluid_body(ps, spec.detach_gap * spec.spacing);
   if (spec.surge_front)
     row.push_back(
@@ -87,6 +90,14 @@ std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim,
   if (spec.column_height)
     row.push_back(
         column_height(ps, body, wall, floor, spec.wall_band * spec.spacing, spec.spacing));
+  if constexpr (D == 2) {
+    if (spec.bore) {
+      // h0: the depth of the incoming layer, the first fluid block's height.
+      const auto& b = spec.blocks.front();
+      const auto m = measure_bore(ps, body, wall, spec.rho0, b.max[1] - b.min[1], spec.spacing);
+      row.insert(row.end(), {m.front, m.height});
+    }
+  }
   return row;
 }
 

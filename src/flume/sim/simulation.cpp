@@ -38,6 +38,11 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       config_(config) {
   ps_.drop_ghosts();
   ps_.use_only(scheme_->fields());
+  // The pressure of the starting density, so that the state written before the first step
+  // (snapshot 0) shows it; every step recomputes it.
+  for (std::size_t i = 0; i < ps_.n_real; ++i)
+    ps_.p[i] = phys_.eos.pressure(ps_.rho[i]);
+  walls_.set_time(time_);
   check_state();
 }
 
@@ -68,6 +73,7 @@ void Simulation<D>::step(double max_dt) {
     h_min = std::min(h_min, ps_.h[i]);
   }
   const double range = scheme_->support() * h_max;
+  walls_.set_time(time_);  // moving walls stand where they are at t^n while the rates are taken
   prepare_neighbours(range);
   const SweepContext<D> ctx{grid_, work_, h_min == h_max ? h_max : 0.0, &clock_};
 
@@ -101,6 +107,7 @@ void Simulation<D>::step(double max_dt) {
   }
   phase.emplace(&clock_, "boundaries");
   ps_.drop_ghosts();
+  walls_.set_time(time_ + dt);  // the positions are now those of t^{n+1}
   walls_.reflect_crossings(ps_, range);
   time_ += dt;
   last_dt_ = dt;

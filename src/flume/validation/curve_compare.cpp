@@ -41,4 +41,63 @@ std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::v
   return out;
 }
 
+namespace {
+
+double mean_of(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v)
+    s += x;
+  return s / static_cast<double>(v.size());
+}
+
+// Least-squares slope of (x, y).
+double slope_of(const std::vector<double>& x, const std::vector<double>& y) {
+  const double mx = mean_of(x), my = mean_of(y);
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    sxy += (x[k] - mx) * (y[k] - my);
+    sxx += (x[k] - mx) * (x[k] - mx);
+  }
+  return sxy / sxx;
+}
+
+}  // namespace
+
+std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
+                                            const std::vector<double>& y,
+                                            const std::vector<double>& ref_x,
+                                            const std::vector<double>& ref_y, double time_scale,
+                                            double value_scale, bool absolute,
+                                            CurveStatistic statistic, double from, double to) {
+  std::vector<double> rx, ry;
+  for (std::size_t k = 0; k < ref_x.size(); ++k)
+    if (ref_x[k] >= from && ref_x[k] <= to) {
+      rx.push_back(ref_x[k]);
+      ry.push_back(ref_y[k]);
+    }
+  auto points = compare_curve(t, y, rx, ry, time_scale, value_scale, absolute);
+  if (statistic == CurveStatistic::pointwise) return points;
+  // Only a window the run covered entirely is summarised: a run that stopped early must not
+  // pass on the part it reached.
+  if (points.size() < 2 || points.size() != rx.size()) return {};
+  std::vector<double> xs, fv, rv;
+  for (const auto& p : points) {
+    xs.push_back(p.x);
+    fv.push_back(p.value);
+    rv.push_back(p.reference);
+  }
+  CurvePoint out;
+  out.x = xs.back();
+  if (statistic == CurveStatistic::mean) {
+    out.value = mean_of(fv);
+    out.reference = mean_of(rv);
+  } else {
+    out.value = slope_of(xs, fv);
+    out.reference = slope_of(xs, rv);
+  }
+  const double diff = std::abs(out.value - out.reference);
+  out.error = !absolute && out.reference != 0.0 ? diff / std::abs(out.reference) : diff;
+  return {out};
+}
+
 }  // namespace flume

@@ -22,6 +22,24 @@ std::vector<CurvePoint> compare_curve(const std::vector<double>& t, const std::v
                                       const std::vector<double>& ref_y, double time_scale,
                                       double value_scale, bool absolute = false);
 
+// How a probe is compared with its reference over a window [from, to] of the reference's x.
+enum class CurveStatistic {
+  pointwise,  // at every reference point (compare_curve)
+  mean,       // the mean of the values at the reference points
+  slope,      // their least-squares slope against x (a speed from a position)
+};
+
+// Compares the statistic of flume's values (interpolated at the reference points inside the
+// window and the simulated time) with the same statistic of the reference. pointwise gives one
+// point per reference point; mean and slope give one point at the window's last reference point
+// (empty if fewer than two points fall inside).
+std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
+                                            const std::vector<double>& y,
+                                            const std::vector<double>& ref_x,
+                                            const std::vector<double>& ref_y, double time_scale,
+                                            double value_scale, bool absolute,
+                                            CurveStatistic statistic, double from, double to);
+
 // Linear interpolation of (xs, ys) at x, xs ascending; x must lie within [xs.front(), xs.back()].
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);
 

@@ -75,6 +75,12 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
     md += fmt::format("Variant `{}`: max error {}, mean {} (reported, not gated).\n", s.label,
                       amount(sum.max, abs), amount(sum.mean, abs));
   }
+  if (check.statistic != CurveStatistic::pointwise)
+    md += fmt::format(
+        "Compared: the {} of the values at the reference's points with {} from {:.3g} to the "
+        "row's {}.\n",
+        check.statistic == CurveStatistic::mean ? "mean" : "least-squares slope (per unit x)",
+        check.reference_x, check.window_from, check.reference_x);
   md += fmt::format("\n| {} | reference {} |", check.reference_x, check.reference_y);
   std::string rule = "\n|---|---|";
   for (const auto& s : cr.series) {

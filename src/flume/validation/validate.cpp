@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -39,15 +40,15 @@ std::string variant_label(const std::string& override_text) {
   return eq == std::string::npos ? override_text : override_text.substr(eq + 1);
 }
 
-// The file stem of curve c's plot and data: case and probe, plus the reference column when
-// another curve of the case plots the same probe.
+// The file stem of curve c's plot and data: case and probe, plus the curve's index when another
+// curve of the case plots the same probe.
 std::string curve_stem(const CaseSpec& spec, std::size_t c) {
   const auto& check = spec.curves[c];
   const auto same_probe =
       std::count_if(spec.curves.begin(), spec.curves.end(),
                     [&](const CurveCheck& o) { return o.probe == check.probe; });
   std::string stem = spec.name + "_" + check.probe;
-  return same_probe > 1 ? stem + "_" + check.reference_y : stem;
+  return same_probe > 1 ? fmt::format("{}_{}", stem, c) : stem;
 }
 
 // Plots every series of curve c against the reference with scripts/plot_curve.py; returns the
@@ -120,9 +121,11 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
       const auto t = probes.back().column("time");
       for (const auto& check : spec.curves) {
         const auto ref = curve_reference(spec, check);
-        s.curves.push_back(compare_curve(
-            t, probes.back().column(check.probe), ref.column(check.reference_x),
-            ref.column(check.reference_y), spec.time_scale, check.value_scale, check.absolute));
+        const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
+        s.curves.push_back(
+            compare_over_window(t, probes.back().column(check.probe), ref.column(check.reference_x),
+                                ref.column(check.reference_y), spec.time_scale, check.value_scale,
+                                check.absolute, check.statistic, check.window_from, to));
       }
     }
     cr.series.push_back(std::move(s));
@@ -157,7 +160,11 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
       if (check.gated) all_pass = all_pass && pass;
       rows.push_back(
           {{"case", cr.spec.name},
-           {"metric", fmt::format("{} at {}={:.3g}", check.probe, check.reference_x, p.x)},
+           {"metric", check.statistic == CurveStatistic::pointwise
+                          ? fmt::format("{} at {}={:.3g}", check.probe, check.reference_x, p.x)
+                          : fmt::format("{} {} over {}=[{:.3g}, {:.3g}]", check.probe,
+                                        check.statistic == CurveStatistic::mean ? "mean" : "slope",
+                                        check.reference_x, check.window_from, p.x)},
            {"value", p.value},
            {"reference", p.reference},
            {"error", p.error},
