@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Plot flume probe curves (one per scheme) against reference data (used by `flume validate`)."""
+"""Plot flume curves (one per scheme), against reference data when given (used by `flume validate`:
+probes against their references, and diagnostics such as the angular momentum of BL Fig 6)."""
 import argparse
 import csv
 
@@ -18,7 +19,7 @@ def read(path):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--series", action="append", default=[], help="LABEL=CSV (columns x,y)")
-    ap.add_argument("--reference", required=True)
+    ap.add_argument("--reference")
     ap.add_argument("--reference-label", default="reference")
     ap.add_argument("--out", required=True)
     ap.add_argument("--title", default="")
@@ -26,15 +27,18 @@ def main():
     ap.add_argument("--ylabel", default="y")
     a = ap.parse_args()
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    rx, ry = read(a.reference)
-    xmax = 1.15 * max(rx)  # the compared window; the run may go on beyond it
+    rx, ry = read(a.reference) if a.reference else ([], [])
+    xmax = 1.15 * max(rx) if rx else None  # the compared window; the run may go on beyond it
     shown = list(ry)
     for k, item in enumerate(a.series):
         label, path = item.split("=", 1)
         x, y = read(path)
         ax.plot(x, y, "-", lw=2.0 if k == 0 else 1.2, label="flume " + label)
+        if xmax is None:
+            xmax = max(x)
         shown += [v for u, v in zip(x, y) if u <= xmax]
-    ax.plot(rx, ry, "o", color="black", mfc="none", label=a.reference_label)
+    if rx:
+        ax.plot(rx, ry, "o", color="black", mfc="none", label=a.reference_label)
     ax.set_xlim(0.0, xmax)
     pad = 0.05 * (max(shown) - min(shown))
     ax.set_ylim(min(shown) - pad, max(shown) + pad)

@@ -2,7 +2,11 @@
 """Draw the particles of a flume snapshot (.vtu written by flume) coloured by a field.
 
 usage: plot_snapshot.py SNAPSHOT.vtu OUT.png [--field pressure] [--xlim A B] [--ylim A B]
+       plot_snapshot.py SNAPSHOTS.pvd OUT.png --time T ...   (the snapshot nearest to T s)
+A field NAME_x, NAME_y or NAME_z is a component of the vector NAME (velocity_x: the horizontal
+velocity); a vector field by its name alone is coloured by its magnitude.
 """
+import os
 import argparse
 import re
 import struct
@@ -41,11 +45,23 @@ def main():
     ap.add_argument("--xlim", nargs=2, type=float)
     ap.add_argument("--ylim", nargs=2, type=float)
     ap.add_argument("--title", default="")
+    ap.add_argument("--time", type=float, help="with a .pvd: the snapshot nearest to this time")
     a = ap.parse_args()
-    d = read_vtu(a.vtu)
+    path = a.vtu
+    if path.endswith(".pvd"):
+        entries = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(path).read())
+        t, f = min(entries, key=lambda e: abs(float(e[0]) - (a.time or 0.0)))
+        path = os.path.join(os.path.dirname(path), f)
+        a.title = a.title or "t = %.4g s" % float(t)
+    d = read_vtu(path)
     pts = d["Points"]
-    c = d[a.field]
-    if isinstance(c[0], tuple):
+    name, comp = a.field, None
+    if name not in d and name[-2:] in ("_x", "_y", "_z"):
+        name, comp = name[:-2], "xyz".index(name[-1])
+    c = d[name]
+    if comp is not None:
+        c = [t[comp] for t in c]
+    elif isinstance(c[0], tuple):
         c = [sum(v * v for v in t) ** 0.5 for t in c]
     fig, ax = plt.subplots(figsize=(9, 3.2))
     sc = ax.scatter([p[0] for p in pts], [p[1] for p in pts], c=c, s=2, cmap="viridis")

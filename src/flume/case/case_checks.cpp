@@ -46,8 +46,19 @@ class Reader {
   }
   std::vector<std::string> strings(const std::string& key) const {
     std::vector<std::string> out;
-    for (const auto& e : *node(key).as_array())
+    for (const auto& e : *node(key).as_array()) {
+      if (!e.is_string()) fail(key, "must be an array of strings");
       out.push_back(*e.value<std::string>());
+    }
+    return out;
+  }
+  std::vector<double> numbers(const std::string& key) const {
+    std::vector<double> out;
+    for (const auto& e : *node(key).as_array()) {
+      if (!e.is_number()) fail(key, "must be an array of numbers");
+      out.push_back(*e.value<double>());
+      if (!std::isfinite(out.back())) fail(key, "must be finite");
+    }
     return out;
   }
 
@@ -284,6 +295,13 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.time_scale = r.positive("validation.time_scale");
   s.notes = r.strings("validation.notes");
   s.variants = r.strings("validation.variants");
+  s.pictures = r.numbers("validation.pictures");
+  for (double when : s.pictures)
+    if (!(when >= 0.0 && when <= s.end_time))
+      r.fail("validation.pictures",
+             fmt::format("{} s: must be within the run, [0, {}]", when, s.end_time));
+  s.picture_field = r.str("validation.picture_field");
+  s.diagnostics_plots = r.strings("validation.diagnostics_plots");
   for (const auto& v : s.variants)
     if (v.find('=') == std::string::npos)
       r.fail("validation.variants", fmt::format("\"{}\": each entry is KEY=VALUE", v));

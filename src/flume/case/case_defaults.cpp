@@ -84,6 +84,9 @@ quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (va
 time_scale = 1.0       # s; the references' time is t / time_scale
 notes = []             # the papers' own numbers, quoted in the report
 variants = []          # "KEY=VALUE": other configurations run and reported beside the case
+pictures = []          # s: particle pictures (PNG) of every configuration near these times
+picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
+diagnostics_plots = []  # diagnostics.csv columns plotted against time for every configuration
 
 # [[fluid_blocks]]: at least one; each a body of fluid:
 #   min = {zero}, max = {one} (m), velocity = {zero} (m/s, at the centre), hydrostatic = true,

@@ -140,8 +140,11 @@ class Checker {
                         : fmt::format("must be an array of {} numbers (a {} x {} matrix, "
                                       "row-major)",
                                       want, dim_, dim_));
-      } else if (!all_strings(*arr)) {
+      } else if (!darr->empty() && !all_strings(*arr)) {
         fail(key, "must be an array of strings");
+      } else if (darr->empty() && !all_strings(*arr) && !all_numbers(*arr)) {
+        // An empty default holds either kind; build_spec says which the key wants.
+        fail(key, "must be an array of numbers or of strings");
       }
     }
   }

@@ -114,6 +114,9 @@ struct CaseSpec {
   double time_scale = 1.0;            // s: reference time = t / time_scale
   std::vector<std::string> notes;     // the papers' numbers, set beside flume's in the report
   std::vector<std::string> variants;  // KEY=VALUE: other configurations run and reported beside
+  std::vector<double> pictures;       // s: particle pictures of every configuration at these times
+  std::string picture_field;          // the snapshot field that colours them
+  std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run
   std::vector<CurveCheck> curves;
 };
 

@@ -25,6 +25,9 @@ struct CaseResult {
   std::vector<double> mean_tolerances;  // per curve: bound on the mean error (0 = none)
   std::vector<std::string> plots;       // per curve: PNG file name, empty if plotting failed
   std::vector<std::string> overrides;   // --set KEY=VALUE given to validate, in every run
+  // pictures[k][s]: PNG of series s near spec.pictures[k] ("" if it could not be drawn)
+  std::vector<std::vector<std::string>> pictures;
+  std::vector<std::string> diagnostics_plots;  // per spec.diagnostics_plots entry: PNG or ""
 };
 
 // Max and mean of the errors of a curve.

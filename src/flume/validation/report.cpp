@@ -100,6 +100,38 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
   return md;
 }
 
+std::string diagnostics_section(const CaseResult& cr) {
+  std::string md;
+  for (std::size_t k = 0; k < cr.diagnostics_plots.size(); ++k) {
+    const auto& column = cr.spec.diagnostics_plots[k];
+    md += fmt::format("\n### {} of every scheme\n\n", column);
+    md += cr.diagnostics_plots[k].empty()
+              ? "(plot unavailable: python3 with matplotlib not found)\n"
+              : fmt::format("![{}]({})\n", column, cr.diagnostics_plots[k]);
+  }
+  return md;
+}
+
+std::string pictures_section(const CaseResult& cr) {
+  if (cr.pictures.empty()) return "";
+  std::string md =
+      fmt::format("\n### Particles, coloured by {} (the snapshot nearest each time)\n\n| t (s) |",
+                  cr.spec.picture_field);
+  std::string rule = "\n|---|";
+  for (const auto& s : cr.series) {
+    md += fmt::format(" `{}` |", s.label);
+    rule += "---|";
+  }
+  md += rule + "\n";
+  for (std::size_t k = 0; k < cr.pictures.size(); ++k) {
+    md += fmt::format("| {:.4g} |", cr.spec.pictures[k]);
+    for (const auto& png : cr.pictures[k])
+      md += png.empty() ? " (unavailable) |" : fmt::format(" ![]({}) |", png);
+    md += "\n";
+  }
+  return md;
+}
+
 }  // namespace
 
 std::string report_markdown(const std::vector<CaseResult>& results, bool quick) {
@@ -127,6 +159,7 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     if (!cr.series.front().run.completed) continue;
     for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
       md += curve_section(cr, c);
+    md += diagnostics_section(cr) + pictures_section(cr);
   }
   return md;
 }

@@ -88,6 +88,57 @@ std::string plot_curve(const std::filesystem::path& out_dir, const CaseResult& c
   return std::system(cmd.c_str()) == 0 ? png : std::string();
 }
 
+// The particle pictures of every completed series near each of the case's picture times,
+// coloured by spec.picture_field (scripts/plot_snapshot.py on the run's snapshots.pvd).
+void draw_pictures(const std::filesystem::path& out_dir, CaseResult& cr) {
+  const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_snapshot.py";
+  for (double t : cr.spec.pictures) {
+    std::vector<std::string> row;
+    for (const auto& s : cr.series) {
+      const auto pvd = out_dir / cr.spec.name / s.label / "snapshots" / "snapshots.pvd";
+      const std::string png = fmt::format("{}_{}_t{:.4g}.png", cr.spec.name, s.label, t);
+      const std::string cmd =
+          fmt::format("{} {} {} {} --time {} --field {} --title {} > /dev/null 2>&1", python(),
+                      shell_quote(script.string()), shell_quote(pvd.string()),
+                      shell_quote((out_dir / png).string()), t, shell_quote(cr.spec.picture_field),
+                      shell_quote(fmt::format("{} `{}`, t = {:.4g} s, coloured by {}", cr.spec.name,
+                                              s.label, t, cr.spec.picture_field)));
+      row.push_back(s.run.completed && std::filesystem::exists(pvd) && std::system(cmd.c_str()) == 0
+                        ? png
+                        : std::string());
+    }
+    cr.pictures.push_back(row);
+  }
+}
+
+// Each of the case's diagnostics columns against time, one line per completed series (BL Fig 6
+// sets the schemes' momenta side by side).
+void plot_diagnostics(const std::filesystem::path& out_dir, CaseResult& cr) {
+  const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_curve.py";
+  for (const auto& column : cr.spec.diagnostics_plots) {
+    std::string args;
+    for (const auto& s : cr.series) {
+      if (!s.run.completed) continue;
+      const auto d = io::read_csv(out_dir / cr.spec.name / s.label / "diagnostics.csv");
+      const auto file = out_dir / fmt::format("{}_{}_{}.csv", cr.spec.name, column, s.label);
+      io::CsvTable table(file, {"x", "y"});
+      const auto t = d.column("time"), y = d.column(column);
+      for (std::size_t k = 0; k < t.size(); ++k)
+        table.add_row(std::vector<double>{t[k], y[k]});
+      table.flush();
+      args += " --series " + shell_quote(s.label + "=" + file.string());
+    }
+    const std::string png = fmt::format("{}_{}.png", cr.spec.name, column);
+    const std::string cmd = fmt::format(
+        "{} {}{} --out {} --title {} --xlabel {} --ylabel {} > /dev/null 2>&1", python(),
+        shell_quote(script.string()), args, shell_quote((out_dir / png).string()),
+        shell_quote(fmt::format("{}: {} of every scheme", cr.spec.name, column)),
+        shell_quote("t (s)"), shell_quote(column));
+    cr.diagnostics_plots.push_back(!args.empty() && std::system(cmd.c_str()) == 0 ? png
+                                                                                  : std::string());
+  }
+}
+
 CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   CaseResult cr;
   const auto file = bundled_case(name);
@@ -130,6 +181,8 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     }
     cr.series.push_back(std::move(s));
   }
+  draw_pictures(opt.out_dir, cr);
+  plot_diagnostics(opt.out_dir, cr);
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
     cr.plots.push_back(
         cr.series.front().run.completed
