@@ -10,15 +10,7 @@ namespace {
 
 const std::string kValid = test::dam_break_toml("continuity", 10, 0.01);
 
-// The message of the InputError that reading `toml` (with overrides) throws.
-std::string error_of(const std::string& toml, const std::vector<std::string>& sets = {}) {
-  try {
-    test::spec_from(toml, sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 void expect_one_line_with(const std::string& msg, std::initializer_list<std::string> parts) {
   EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;

@@ -7,6 +7,7 @@
 
 #include "flume/boundaries/box_walls.hpp"
 #include "flume/case/case_reader.hpp"
+#include "flume/core/error.hpp"
 
 namespace flume::test {
 
@@ -56,6 +57,16 @@ BoxWalls<D> open_box(double lo, double hi) {
 
 inline CaseSpec spec_from(const std::string& toml, const std::vector<std::string>& sets = {}) {
   return read_case_string(toml, "test.toml", sets);
+}
+
+// The message of the InputError that reading `toml` (with overrides) throws, or "(no error)".
+inline std::string error_of(const std::string& toml, const std::vector<std::string>& sets = {}) {
+  try {
+    spec_from(toml, sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
 }
 
 }  // namespace flume::test
