@@ -34,6 +34,7 @@ struct Prepared {
   CellGrid<2> grid;
   Halo<2> halo;
   SweepWorkspace work;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
   double range = 0.0;
 
   explicit Prepared(long n) {
@@ -60,7 +61,11 @@ struct Prepared {
   void prepare() {
     ps.drop_ghosts();
     sort_state(ps, grid.sort_real(std::span<const Vec<2>>(ps.x.data(), ps.n_real), range), work);
-    walls.build_halo(ps, range, halo);
+    Vec<2> clear_lo, clear_hi;  // as the simulation does: only the cells near the walls
+    walls.clear_of_walls(range, clear_lo, clear_hi);
+    near.clear();
+    grid.runs_outside(clear_lo, clear_hi, near);
+    walls.build_halo(ps, range, halo, near);
     std::vector<Vec<2>> gx(halo.size());
     for (std::size_t g = 0; g < halo.size(); ++g)
       gx[g] = halo.position(ps, g);
@@ -101,7 +106,7 @@ void BM_SweepForceStandard(benchmark::State& state) {
   Prepared p(state.range(0));
   for (auto _ : state) {
     ForceBonetLok7<2> pressure{p.ps};
-    accelerate<2, Kernel>(p.ctx(), p.ps, p.phys, pressure);
+    accelerate<2, Kernel>(p.ctx(), p.ps, p.phys, StepLimit<2>(p.phys, 0.2), pressure);
   }
   count_rate(state, p);
 }
@@ -142,7 +147,7 @@ void BM_SweepCsphForce(benchmark::State& state) {
   Prepared p(state.range(0));
   for (auto _ : state) {
     ForceCsphBL59<2> internal{p.ps, 0.0};
-    accelerate<2, Kernel>(p.ctx(), p.ps, p.phys, internal);
+    accelerate<2, Kernel>(p.ctx(), p.ps, p.phys, StepLimit<2>(p.phys, 0.2), internal);
   }
   count_rate(state, p);
 }

@@ -35,7 +35,13 @@ void in_cell_order(double support, ParticleSet<D>& ps, const BoxWalls<D>* walls,
       field[k] = copy[order[k]];
   });
   Halo<D> halo;
-  if (walls) walls->build_halo(sorted, range, halo);
+  if (walls) {  // as a simulation step builds it: from the cells near the walls
+    Vec<D> clear_lo, clear_hi;
+    walls->clear_of_walls(range, clear_lo, clear_hi);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
+    grid.runs_outside(clear_lo, clear_hi, near);
+    walls->build_halo(sorted, range, halo, near);
+  }
   std::vector<Vec<D>> gx(halo.size());
   for (std::size_t g = 0; g < halo.size(); ++g)
     gx[g] = halo.position(sorted, g);
@@ -64,7 +70,8 @@ void compute_rates(const Scheme<D>& scheme, ParticleSet<D>& ps,
                    const BoxWalls<D>* walls = nullptr) {
   in_cell_order(scheme.support(), ps, walls,
                 [&](ParticleSet<D>& s, const SweepContext<D>& ctx, const Halo<D>& halo) {
-                  scheme.compute_accelerations(s, ctx, halo);
+                  // The time step it returns is not needed here (the CFL number is any).
+                  scheme.compute_accelerations(s, ctx, halo, StepLimit<D>{});
                   if (scheme.evolves_density()) scheme.compute_density_rate(s, ctx, halo);
                 });
 }

@@ -14,12 +14,16 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <random>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "flume/boundaries/box_walls.hpp"
 #include "flume/boundaries/halo.hpp"
 #include "flume/core/particle_set.hpp"
 #include "flume/core/vec.hpp"
+#include "flume/neighbors/cell_grid.hpp"
 
 namespace flume {
 namespace {
@@ -567,6 +571,59 @@ TEST(MovingWall, PutBackAndEscapeUseTheWallsPresentPlace) {
   EXPECT_EQ(box.first_outside(ps), -1);
   ps.x[1][0] = 0.9;  // between the wall's present place and its place at t = 0: outside
   EXPECT_EQ(box.first_outside(ps), 1);
+}
+
+// A simulation builds the halo from the particles of the cells near the walls only
+// (CellGrid::runs_outside of clear_of_walls); it must be the halo built from every particle,
+// map for map and in the same order. Free-slip, no-slip and open sides, a moving wall placed
+// away from its rest position, 2D and 3D.
+template <int D>
+void expect_halo_from_near_cells_is_the_full_halo(BoxWalls<D> box, double range,
+                                                  std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  ParticleSet<D> ps;
+  for (int i = 0; i < 3000; ++i) {
+    Vec<D> x;
+    for (int k = 0; k < D; ++k)
+      x[k] = box.wall(k, 0) + (box.wall(k, 1) - box.wall(k, 0)) * u(rng);
+    add_particle<D>(ps, x, Vec<D>{}, Vec<D>{});
+  }
+  CellGrid<D> grid;  // sorted by cell, as the simulation has them when it builds the halo
+  const auto order = grid.sort_real(std::span<const Vec<D>>(ps.x.data(), ps.n_real), range);
+  ParticleSet<D> sorted = ps;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    sorted.x[k] = ps.x[order[k]];
+  Vec<D> clear_lo, clear_hi;
+  box.clear_of_walls(range, clear_lo, clear_hi);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
+  grid.runs_outside(clear_lo, clear_hi, near);
+  Halo<D> fast, full;
+  box.build_halo(sorted, range, fast, near);
+  box.build_halo(sorted, range, full);
+  ASSERT_GT(full.size(), 0u);
+  ASSERT_EQ(fast.size(), full.size());
+  for (std::size_t g = 0; g < full.size(); ++g) {
+    const auto &a = fast.maps()[g], &b = full.maps()[g];
+    ASSERT_EQ(a.source, b.source) << "ghost " << g;
+    ASSERT_EQ(a.scale, b.scale) << "ghost " << g;
+    ASSERT_EQ(a.shift, b.shift) << "ghost " << g;
+    ASSERT_EQ(a.vscale, b.vscale) << "ghost " << g;
+    ASSERT_EQ(a.vshift, b.vshift) << "ghost " << g;
+  }
+}
+
+TEST(BoxWalls, HaloFromTheCellsNearTheWallsIsTheFullHalo) {
+  auto box2 = unit_box<2>(WallKind::free_slip);
+  box2.kind[0] = {WallKind::no_slip, WallKind::open};
+  box2.motion[1][1] = WallMotion{-0.5, 0.0, 0.0};
+  box2.set_time(0.5);  // the top wall at 0.75
+  for (const double range : {0.02, 0.07, 0.2})
+    expect_halo_from_near_cells_is_the_full_halo<2>(box2, range, 11);
+  auto box3 = unit_box<3>(WallKind::free_slip);
+  box3.kind[2] = {WallKind::open, WallKind::no_slip};
+  box3.set_time(0.0);
+  expect_halo_from_near_cells_is_the_full_halo<3>(box3, 0.1, 12);
 }
 
 }  // namespace

@@ -314,5 +314,74 @@ TEST(CellGrid, GhostsAreSortedByCellThenX) {
       ASSERT_LE(sorted[k - x.size() - 1][0], sorted[k - x.size()][0]) << c;
 }
 
+// runs_outside: every real particle outside the box is in a run; the runs are increasing and
+// merged (a gap between any two). Boxes with finite and infinite sides, one that holds every
+// particle and one that holds none; 2D and 3D; uniform and clustered clouds.
+template <int D>
+void expect_runs_hold_the_particles_outside(const std::vector<Vec<D>>& x, double range,
+                                            const Vec<D>& lo, const Vec<D>& hi) {
+  CellGrid<D> grid;
+  const auto order = grid.sort_real(std::span<const Vec<D>>(x), range);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
+  grid.runs_outside(lo, hi, runs);
+  std::vector<bool> in_run(x.size(), false);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    ASSERT_LT(runs[r].first, runs[r].second) << "run " << r << " is empty";
+    if (r > 0) {
+      ASSERT_LT(runs[r - 1].second, runs[r].first) << "runs " << r - 1 << ", " << r;
+    }
+    for (std::uint32_t k = runs[r].first; k < runs[r].second; ++k)
+      in_run[k] = true;
+  }
+  std::size_t outside = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const Vec<D>& p = x[order[k]];
+    bool out = false;
+    for (int a = 0; a < D; ++a)
+      out = out || !(p[a] > lo[a] && p[a] < hi[a]);
+    if (!out) continue;
+    ++outside;
+    EXPECT_TRUE(in_run[k]) << "particle at sorted index " << k << " is outside but in no run";
+  }
+  if (outside > 0) {
+    EXPECT_GT(runs.size(), 0u);
+  }
+}
+
+TEST(CellGrid, RunsOutsideHoldEveryParticleOutsideTheBox) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto x2 = uniform_cloud<2>(3000, 0.0, 1.0, 96);
+  for (const double r : {0.03, 0.1, 0.3}) {
+    expect_runs_hold_the_particles_outside<2>(x2, r, Vec<2>{{r, r}}, Vec<2>{{1 - r, 1 - r}});
+    expect_runs_hold_the_particles_outside<2>(x2, r, Vec<2>{{-inf, r}}, Vec<2>{{1 - r, inf}});
+    expect_runs_hold_the_particles_outside<2>(x2, r, Vec<2>{{0.5, -inf}}, Vec<2>{{inf, inf}});
+  }
+  // No particle outside, and all of them outside.
+  expect_runs_hold_the_particles_outside<2>(x2, 0.05, Vec<2>{{-inf, -inf}}, Vec<2>{{inf, inf}});
+  expect_runs_hold_the_particles_outside<2>(x2, 0.05, Vec<2>{{2.0, 2.0}}, Vec<2>{{3.0, 3.0}});
+  const auto x3 = clustered_cloud<3>(4000, 97);
+  expect_runs_hold_the_particles_outside<3>(x3, 0.1, Vec<3>{{0.5, 0.4, 0.3}},
+                                            Vec<3>{{2.5, 2.6, 2.7}});
+  expect_runs_hold_the_particles_outside<3>(x3, 0.1, Vec<3>{{-inf, 1.0, -inf}},
+                                            Vec<3>{{inf, 2.0, 1.5}});
+}
+
+// The runs are a small part of the particles when the box is most of the cloud: a halo built
+// from them costs a layer of cells near the walls, not the whole set.
+TEST(CellGrid, RunsOutsideAreTheCellsNearTheBoxOnly) {
+  const auto x = uniform_cloud<2>(20000, 0.0, 1.0, 98);
+  CellGrid<2> grid;
+  grid.sort_real(std::span<const Vec<2>>(x), 0.01);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
+  grid.runs_outside(Vec<2>{{0.01, 0.01}}, Vec<2>{{0.99, 0.99}}, runs);
+  std::size_t held = 0;
+  for (const auto& [b, e] : runs)
+    held += e - b;
+  // The band within 0.01 of the sides holds 4 % of the particles; with the two extra layers
+  // of cells (and the cells' margin) on each side, at most about three times that.
+  EXPECT_LT(static_cast<double>(held), 0.13 * static_cast<double>(x.size()));
+  EXPECT_GT(static_cast<double>(held), 0.039 * static_cast<double>(x.size()));
+}
+
 }  // namespace
 }  // namespace flume

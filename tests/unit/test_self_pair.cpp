@@ -63,7 +63,7 @@ TEST(SelfPair, GradientOnlyEquationsAddExactZeros) {
   expect_zero_self_pair(av, ps, "W (3.18)");
   expect_zero_self_pair(bl4, ps, "BL (4)");
   expect_zero_self_pair(bl22, ps, "BL (22)");
-  AccelerationSum<2, ForceBonetLok7<2>, ViscosityArtificialMonaghan<2>> sum{ps, bl7, av};
+  AccelerationSum<2, ForceBonetLok7<2>, ViscosityArtificialMonaghan<2>> sum{ps, Vec<2>{}, bl7, av};
   expect_zero_self_pair(sum, ps, "AccelerationSum");
 }
 

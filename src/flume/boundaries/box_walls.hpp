@@ -13,7 +13,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flume/boundaries/halo.hpp"
@@ -45,31 +49,55 @@ struct BoxWalls {
   }
   double wall_speed(int k, int side) const { return placed_ ? speed_[k][side] : 0.0; }
 
+  // The points farther than range from every wall: the box (inner_lo, inner_hi), infinite on
+  // open sides. Only particles outside it have mirror images.
+  void clear_of_walls(double range, Vec<D>& inner_lo, Vec<D>& inner_hi) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < D; ++k) {
+      inner_lo[k] = kind[k][0] == WallKind::open ? -inf : wall(k, 0) + range;
+      inner_hi[k] = kind[k][1] == WallKind::open ? inf : wall(k, 1) - range;
+    }
+  }
+
   // Rebuilds the halo: one ghost per (particle, non-empty set of nearby walls with at most one
-  // wall per axis). range is the kernel support radius. Deterministic order: by particle, then
-  // by wall combination (a count per particle, a prefix sum, then a parallel fill).
-  void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo) const {
-    const auto n = static_cast<long>(ps.n_real);
+  // wall per axis). range is the kernel support radius. Only the particles of `runs` (ranges of
+  // indices, increasing; CellGrid::runs_outside of clear_of_walls) are looked at: every
+  // particle with an image must be in one. Deterministic order: by particle, then by wall
+  // combination (a count per particle, a prefix sum, then a parallel fill).
+  void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo,
+                  std::span<const std::pair<std::uint32_t, std::uint32_t>> runs) const {
+    std::vector<std::uint32_t>& near = near_;
+    near.clear();
+    for (const auto& [b, e] : runs)
+      for (std::uint32_t i = b; i < e; ++i)
+        near.push_back(i);
+    const auto n = static_cast<long>(near.size());
     std::vector<std::uint32_t>& first = first_ghost_;
-    first.resize(ps.n_real + 1);
+    first.resize(near.size() + 1);
 #pragma omp parallel for schedule(static)
-    for (long ii = 0; ii < n; ++ii) {
-      const auto i = static_cast<std::size_t>(ii);
-      first[i + 1] = static_cast<std::uint32_t>(for_each_image(ps.x[i], range, [](auto&&) {}));
+    for (long kk = 0; kk < n; ++kk) {
+      const auto k = static_cast<std::size_t>(kk);
+      first[k + 1] =
+          static_cast<std::uint32_t>(for_each_image(ps.x[near[k]], range, [](auto&&) {}));
     }
     first[0] = 0;
-    for (std::size_t i = 0; i < ps.n_real; ++i)
-      first[i + 1] += first[i];
-    auto& maps = halo.resize(first[ps.n_real]);
+    for (std::size_t k = 0; k < near.size(); ++k)
+      first[k + 1] += first[k];
+    auto& maps = halo.resize(first[near.size()]);
 #pragma omp parallel for schedule(static)
-    for (long ii = 0; ii < n; ++ii) {
-      const auto i = static_cast<std::size_t>(ii);
-      std::size_t k = first[i];
-      for_each_image(ps.x[i], range, [&](GhostMap<D> g) {
-        g.source = static_cast<std::uint32_t>(i);
-        maps[k++] = g;
+    for (long kk = 0; kk < n; ++kk) {
+      const auto k = static_cast<std::size_t>(kk);
+      std::size_t g = first[k];
+      for_each_image(ps.x[near[k]], range, [&](GhostMap<D> map) {
+        map.source = near[k];
+        maps[g++] = map;
       });
     }
+  }
+  // The same, looking at every real particle.
+  void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo) const {
+    const std::pair<std::uint32_t, std::uint32_t> all{0, static_cast<std::uint32_t>(ps.n_real)};
+    build_halo(ps, range, halo, std::span(&all, 1));
   }
 
   // Calls f(map) for each mirror image of a particle at x (source not set); returns how many.
@@ -130,53 +158,71 @@ struct BoxWalls {
   // A particle that has stepped across a mirror wall is replaced by its mirror image (W (6.8),
   // "put back"): across a symmetry plane the particle and its ghost are interchangeable, so the
   // image is the state the mirror condition implies. Its velocities are mapped as the ghost's are.
-  // Particles further out than `range` are left alone for first_outside() to report.
-  void reflect_crossings(ParticleSet<D>& ps, double range) const {
-    const auto n = static_cast<long>(ps.n_real);
-#pragma omp parallel for schedule(static)
-    for (long ii = 0; ii < n; ++ii) {
-      const auto i = static_cast<std::size_t>(ii);
-      for (int k = 0; k < D; ++k) {
-        for (int side = 0; side < 2; ++side) {
-          const WallKind w = kind[k][side];
-          if (w == WallKind::open) continue;
-          const double at = wall(k, side);
-          const double depth = side == 0 ? at - ps.x[i][k] : ps.x[i][k] - at;
-          if (!(depth > 0.0) || depth > range) continue;
-          ps.x[i][k] = 2.0 * at - ps.x[i][k];
-          if (w == WallKind::no_slip) {
-            ps.v[i] = -ps.v[i];
-            ps.v_half[i] = -ps.v_half[i];
-          } else {
-            ps.v[i][k] = -ps.v[i][k];
-            ps.v_half[i][k] = -ps.v_half[i][k];
-          }
-          const double u2 = 2.0 * wall_speed(k, side);
-          ps.v[i][k] += u2;
-          ps.v_half[i][k] += u2;
-        }
-      }
+  // Particles further out than `range` are left alone for inside() to report. For the real
+  // particles [b, e); the walls are taken in turn (axis, then side), each over every particle,
+  // with selects rather than branches on the particle, so that the loops vectorise.
+  void put_back(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
+    [&]<int... K>(std::integer_sequence<int, K...>) {
+      ((put_back_at<K, 0>(ps, b, e, range), put_back_at<K, 1>(ps, b, e, range)), ...);
     }
+    (std::make_integer_sequence<int, D>{});
+  }
+  // put_back for every real particle (a simulation does it block by block in the drift's pass).
+  void reflect_crossings(ParticleSet<D>& ps, double range) const {
+    put_back(ps, 0, ps.n_real, range);
   }
 
-  // Index of the first real particle outside the box, or -1. Walls are impermeable and open
-  // sides let particles leave the domain: either way such a particle is lost to the run.
+  // Whether particle i is inside the box (a NaN position is not). Walls are impermeable and
+  // open sides let particles leave the domain: either way a particle outside is lost to the run.
+  [[gnu::always_inline]] bool inside(const ParticleSet<D>& ps, std::size_t i) const {
+    bool in = true;
+    for (int k = 0; k < D; ++k)
+      in = in & (ps.x[i][k] >= wall(k, 0)) & (ps.x[i][k] <= wall(k, 1));
+    return in;
+  }
+  // Index of the first real particle outside the box, or -1.
   long first_outside(const ParticleSet<D>& ps) const {
     const auto n = static_cast<long>(ps.n_real);
     long first = n;
 #pragma omp parallel for schedule(static) reduction(min : first)
     for (long i = 0; i < n; ++i)
-      for (int k = 0; k < D; ++k)
-        if (!(ps.x[static_cast<std::size_t>(i)][k] >= wall(k, 0) &&
-              ps.x[static_cast<std::size_t>(i)][k] <= wall(k, 1)))
-          first = std::min(first, i);
+      if (!inside(ps, static_cast<std::size_t>(i))) first = std::min(first, i);
     return first < n ? first : -1;
   }
 
-  // Scratch of build_halo: per particle, the index of its first ghost (reused between steps).
+  // Scratch of build_halo (reused between steps): the particles looked at, and the index of
+  // each one's first ghost.
+  mutable std::vector<std::uint32_t> near_;
   mutable std::vector<std::uint32_t> first_ghost_;
 
  private:
+  // put_back across the wall on `Side` of axis K (compile-time, so that the particle loop
+  // indexes fixed components and vectorises).
+  template <int K, int Side>
+  void put_back_at(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
+    const WallKind w = kind[K][Side];
+    if (w == WallKind::open) return;
+    const double at = wall(K, Side);
+    const double u2 = 2.0 * wall_speed(K, Side);
+    const bool no_slip = w == WallKind::no_slip;  // all components mirrored, else the normal one
+    Vec<D>* __restrict x = ps.x.data();
+    Vec<D>* __restrict v = ps.v.data();
+    Vec<D>* __restrict v_half = ps.v_half.data();
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) {
+      const double depth = Side == 0 ? at - x[i][K] : x[i][K] - at;
+      const bool across = depth > 0.0 && depth <= range;
+      x[i][K] = across ? 2.0 * at - x[i][K] : x[i][K];
+      for (int l = 0; l < D; ++l) {
+        const bool mirror = across && (no_slip || l == K);
+        const double vl = l == K ? -v[i][l] + u2 : -v[i][l];
+        const double vhl = l == K ? -v_half[i][l] + u2 : -v_half[i][l];
+        v[i][l] = mirror ? vl : v[i][l];
+        v_half[i][l] = mirror ? vhl : v_half[i][l];
+      }
+    }
+  }
+
   std::array<std::array<double, 2>, D> place_{}, speed_{};
   bool placed_ = false;  // before set_time() the walls stand at lo, hi
 };

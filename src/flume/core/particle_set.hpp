@@ -94,7 +94,10 @@ struct ParticleSet {
     for_each_derived_field(f);
   }
 
-  void resize(std::size_t n) {
+  // Not inlined: inlined into a caller that adds particles one at a time, GCC 12 loses track of
+  // the vectors' sizes and warns of an impossible memmove (-Wstringop-overflow, a false
+  // positive), which -Werror makes fatal.
+  [[gnu::noinline]] void resize(std::size_t n) {
     for_each_field([n](auto& field) { field.resize(n); });
   }
 

@@ -1,5 +1,6 @@
 // The momentum equation's terms summed in one sweep, BL (6) / W (3.17):
 //   a_a = g + sum of the pair terms (pressure force, physical and artificial viscosity).
+// It writes the whole of a_a, the body force g included, in its finish.
 // Every term gives the pair (i, j) its acceleration shares; here they share one accumulator per
 // particle, added to ps.a once at the end, instead of one accumulator (and one finish) per term.
 // Each term keeps its own file, formula and finish (ps.a[i] += a) for use on its own. The terms'
@@ -32,9 +33,11 @@ struct AccelerationSum : detail::OwnDeclaration<(HasOwn<Terms> || ...), OwnPack<
   using Acc = Vec<D>;
   static constexpr bool kGradientOnly = (gradient_only<Terms>() && ...);
   ParticleSet<D>& ps;
+  Vec<D> body;  // g = F_a / m_a, the external force of BL (6), m/s^2
   std::tuple<const Terms&...> terms;
 
-  AccelerationSum(ParticleSet<D>& particles, const Terms&... t) : ps(particles), terms(t...) {}
+  AccelerationSum(ParticleSet<D>& particles, const Vec<D>& g, const Terms&... t)
+      : ps(particles), body(g), terms(t...) {}
 
   Acc init(std::size_t) const { return {}; }
   auto own(std::size_t b) const requires(HasOwn<Terms> || ...) {
@@ -88,7 +91,8 @@ struct AccelerationSum : detail::OwnDeclaration<(HasOwn<Terms> || ...), OwnPack<
       a_j += sum_j;
     }
   }
-  void finish(Acc& a, std::size_t i) const { ps.a[i] += a; }
+  // a_a = g + the internal terms: the whole acceleration, so no pass of its own sets a_a = g.
+  void finish(Acc& a, std::size_t i) const { ps.a[i] = body + a; }
 };
 
 }  // namespace flume

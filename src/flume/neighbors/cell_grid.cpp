@@ -177,6 +177,53 @@ const std::vector<std::uint32_t>& CellGrid<D>::sort_ghosts(std::span<const Vec<D
 }
 
 template <int D>
+void CellGrid<D>::runs_outside(const Vec<D>& lo, const Vec<D>& hi,
+                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& runs) const {
+  // Along axis k, the layers l <= first[k] reach below lo[k] and the layers l >= last[k] above
+  // hi[k] (in cell units, widened by two layers; infinite bounds give infinite limits).
+  std::array<double, D> first, last;
+  for (int k = 0; k < D; ++k) {
+    first[k] = (lo[k] - origin_[k]) / edge_ + 2.0;
+    last[k] = (hi[k] - origin_[k]) / edge_ - 2.0;
+  }
+  auto add = [&](std::size_t c_begin, std::size_t c_end) {  // the cells [c_begin, c_end)
+    const std::uint32_t b = real_start_[c_begin], e = real_start_[c_end];
+    if (b == e) return;
+    if (!runs.empty() && runs.back().second == b)
+      runs.back().second = e;
+    else
+      runs.emplace_back(b, e);
+  };
+  const std::size_t nx = dims_[0];
+  const std::size_t rows = cell_count_ / nx;
+  for (std::size_t r = 0; r < rows; ++r) {
+    // The row's layer along each axis but x (the row index r in the strides of axes 1..D-1).
+    bool whole = false;
+    std::size_t rest = r;
+    for (int k = 1; k < D; ++k) {
+      const auto l = static_cast<double>(rest % dims_[k]);
+      rest /= dims_[k];
+      whole = whole || l <= first[k] || l >= last[k];
+    }
+    const std::size_t c0 = r * nx;
+    if (whole) {
+      add(c0, c0 + nx);
+      continue;
+    }
+    // The layers along x below and above: [0, a) and [b, nx).
+    const double dnx = static_cast<double>(nx);
+    const auto a = static_cast<std::size_t>(std::clamp(std::floor(first[0]) + 1.0, 0.0, dnx));
+    const auto b = static_cast<std::size_t>(std::clamp(std::ceil(last[0]), 0.0, dnx));
+    if (a >= b) {
+      add(c0, c0 + nx);
+    } else {
+      add(c0, c0 + a);
+      add(c0 + b, c0 + nx);
+    }
+  }
+}
+
+template <int D>
 std::size_t CellGrid<D>::bytes() const {
   return sizeof(std::uint32_t) *
          (real_start_.capacity() + ghost_start_.capacity() + real_cell_.capacity() +

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "flume/core/vec.hpp"
@@ -48,6 +49,13 @@ class CellGrid {
   std::uint32_t ghost_begin(std::size_t c) const { return ghost_start_[c]; }
   // The cell of sorted real particle i.
   std::size_t cell_of_real(std::size_t i) const { return real_cell_[i]; }
+
+  // Appends to `runs` the index ranges [first, second) of the real particles of every cell
+  // that reaches outside the box (lo, hi) (components may be infinite), in increasing order and
+  // merged where they touch: every real particle outside the box is in one of them. The cells
+  // two layers further in are taken too, so the rounding of a cell's bounds never loses one.
+  void runs_outside(const Vec<D>& lo, const Vec<D>& hi,
+                    std::vector<std::pair<std::uint32_t, std::uint32_t>>& runs) const;
 
   std::size_t bytes() const;
 

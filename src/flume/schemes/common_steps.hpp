@@ -13,6 +13,7 @@
 #include "flume/equations/velocity_gradient_bl22.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
 #include "flume/equations/viscosity_bonet_lok_24.hpp"
+#include "flume/integrators/time_step.hpp"
 #include "flume/schemes/physics.hpp"
 #include "flume/schemes/sweep.hpp"
 
@@ -47,12 +48,6 @@ void shepard_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D
   halo.update_scalar(ps, ps.rho);
 }
 
-// a_a = g: the external force F_a / m_a of BL (6); the internal forces are added by the sweeps.
-template <int D>
-void start_accelerations(ParticleSet<D>& ps, const Physics<D>& phys) {
-  for_each_real(ps.n_real, [&](std::size_t i) { ps.a[i] = phys.gravity; });
-}
-
 // Sweep: grad v_a, BL (22); then sigma'_a = 2 mu d'_a for real and ghost particles, BL (23)-(24).
 template <int D, class Kernel>
 void update_viscous_stress(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo,
@@ -66,26 +61,23 @@ void update_viscous_stress(const SweepContext<D>& ctx, ParticleSet<D>& ps, const
 // Sweep: a_a = g + the equations given (a pressure force, ...) + physical viscosity BL (24)
 // (when mu > 0, from ps.stress) + artificial viscosity W (3.18) (when alpha or beta > 0). The
 // terms that are off are left out of the sweep, not evaluated as zeros; the terms on share one
-// accumulator (AccelerationSum).
+// accumulator (AccelerationSum). Returns the stable time step min_a dt_a (time_step.hpp), taken
+// as each a_a is finished: no pass of its own over the particles.
 template <int D, class Kernel, class... Forces>
-void accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<D>& phys,
-                Forces&... forces) {
-  start_accelerations(ps, phys);
+double accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<D>& phys,
+                  const StepLimit<D>& limit, Forces&... forces) {
   ViscosityBonetLok24<D> viscous{ps};
   ViscosityArtificialMonaghan<D> artificial{ps, phys.av_alpha, phys.av_beta};
   const bool av = phys.av_alpha != 0.0 || phys.av_beta != 0.0;
   auto run = [&](const auto&... terms) {
-    AccelerationSum<D, std::remove_cvref_t<decltype(terms)>...> sum{ps, terms...};
-    sweep<D, Kernel>(ctx, ps, "force", sum);
+    AccelerationSum<D, std::remove_cvref_t<decltype(terms)>...> sum{ps, phys.gravity, terms...};
+    return sweep_least<D, Kernel>(
+        ctx, ps, "force", [&](std::size_t b, std::size_t e) { return limit.least(ps, b, e); }, sum);
   };
-  if (phys.mu > 0.0 && av)
-    run(forces..., viscous, artificial);
-  else if (phys.mu > 0.0)
-    run(forces..., viscous);
-  else if (av)
-    run(forces..., artificial);
-  else
-    run(forces...);
+  if (phys.mu > 0.0 && av) return run(forces..., viscous, artificial);
+  if (phys.mu > 0.0) return run(forces..., viscous);
+  if (av) return run(forces..., artificial);
+  return run(forces...);
 }
 
 }  // namespace flume

@@ -23,12 +23,12 @@ class ContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
     return kFieldDrho | (phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u);
   }
 
-  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                             const Halo<D>& halo) const override {
+  double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                               const StepLimit<D>& limit) const override {
     update_pressure(ps, phys_, halo);
     if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
     ForceBonetLok20<D> pressure{ps};
-    accelerate<D, Kernel>(ctx, ps, phys_, pressure);
+    return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }
 
   void compute_density_rate(ParticleSet<D>& ps, const SweepContext<D>& ctx,

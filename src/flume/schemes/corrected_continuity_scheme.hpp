@@ -34,8 +34,8 @@ class CorrectedContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
            (phys_.mu > 0.0 ? kFieldStress : 0u);
   }
 
-  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                             const Halo<D>& halo) const override {
+  double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                               const StepLimit<D>& limit) const override {
     CorrectedVelocityGradient<D, C> correction{ps};
     sweep<D, Kernel>(ctx, ps, "correction", correction);
     if constexpr (corrects_kernel(C)) halo.update_shepard(ps);
@@ -48,10 +48,10 @@ class CorrectedContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
     inviscid.mu = 0.0;
     if constexpr (corrects_kernel(C)) {
       ForceCsphBL59<D> internal{ps, phys_.mu};
-      accelerate<D, Kernel>(ctx, ps, inviscid, internal);
+      return accelerate<D, Kernel>(ctx, ps, inviscid, limit, internal);
     } else {
       ForceGradientCorrected<D> internal{ps, phys_.mu};
-      accelerate<D, Kernel>(ctx, ps, inviscid, internal);
+      return accelerate<D, Kernel>(ctx, ps, inviscid, limit, internal);
     }
   }
 

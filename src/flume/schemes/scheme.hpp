@@ -8,6 +8,7 @@
 
 #include "flume/boundaries/halo.hpp"
 #include "flume/core/particle_set.hpp"
+#include "flume/integrators/time_step.hpp"
 #include "flume/schemes/physics.hpp"
 #include "flume/schemes/sweep.hpp"
 
@@ -23,11 +24,12 @@ class Scheme {
   virtual bool evolves_density() const = 0;
   // The optional particle fields (OptionalField bits) the scheme reads or writes.
   virtual unsigned fields() const = 0;
-  // Fills ps.a of the real particles (and ps.rho, for a summation density). The ghosts are
-  // appended to ps, sorted into ctx.grid with the real particles; halo refreshes the ghosts
-  // between groups.
-  virtual void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                                     const Halo<D>& halo) const = 0;
+  // Fills ps.a of the real particles (and ps.rho, for a summation density) and returns the
+  // stable time step of the new state, limit.least over the real particles (time_step.hpp). The
+  // ghosts are appended to ps, sorted into ctx.grid with the real particles; halo refreshes the
+  // ghosts between groups.
+  virtual double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
+                                       const Halo<D>& halo, const StepLimit<D>& limit) const = 0;
   // For schemes that evolve density: fills ps.drho from the positions x^n and the velocities
   // v^{n+1/2} after the leap-frog kick (leapfrog.hpp says why). Ghost v_half is refreshed here.
   virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,

@@ -29,8 +29,8 @@ class SummationScheme final : public Scheme<D> {
   bool evolves_density() const override { return false; }
   unsigned fields() const override { return phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u; }
 
-  void compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                             const Halo<D>& halo) const override {
+  double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                               const StepLimit<D>& limit) const override {
     Density<D> density{ps};
     // The equation of state in the same pass as the density's finish (sweep_then).
     sweep_then<D, Kernel>(
@@ -41,7 +41,7 @@ class SummationScheme final : public Scheme<D> {
 
     if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
     Force<D> pressure{ps};
-    accelerate<D, Kernel>(ctx, ps, phys_, pressure);
+    return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }
 
  private:

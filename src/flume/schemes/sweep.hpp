@@ -26,6 +26,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -46,6 +47,9 @@
 #endif
 
 namespace flume {
+
+// Particles per block of the per-particle passes that work block by block (least_over_blocks).
+inline constexpr std::size_t kParticleBlock = 512;
 
 // What a sweep needs besides the particles: the cell grid of this step, scratch arrays, the
 // common smoothing length when every particle has the same one (else 0), and the clock that
@@ -486,9 +490,12 @@ AccStore<Acc> acc_store(SweepWorkspace& work, std::size_t slot, std::size_t n) {
   return {reinterpret_cast<double*>(buffer.data()), n};
 }
 
+// Runs the group; then(i) follows the equations' finish of each real particle i. Or, when
+// then takes a block of particles [b, e) and returns a number, then(b, e) follows the finish of
+// each block and the group returns the least of those numbers (else +infinity).
 template <int D, class Kernel, class Then, class... Eqs, std::size_t... I>
-void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const Then& then,
-                 std::index_sequence<I...> seq, Eqs&... eqs) {
+double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const Then& then,
+                   std::index_sequence<I...> seq, Eqs&... eqs) {
   const std::size_t n = ps.n_real;
   std::tuple<AccStore<typename Eqs::Acc>...> acc{
       acc_store<D, typename Eqs::Acc>(ctx.work, I, n)...};
@@ -497,6 +504,7 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const The
   std::tuple<OwnStore<OwnOf<Eqs>>...> own{own_store(ctx.work, eqs, I, ps.size())...};
   const auto nn = static_cast<long>(n);
   const auto n_all = static_cast<long>(ps.size());
+  double least = std::numeric_limits<double>::infinity();
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -516,17 +524,37 @@ void sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const The
       sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, seq);
     else
       sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, seq);
-#pragma omp for simd schedule(static)
-    for (long ii = 0; ii < nn; ++ii) {
-      const auto i = static_cast<std::size_t>(ii);
-      auto finish = [&](const auto& eq, const auto& store) {
+    auto finish = [&](std::size_t i) {
+      auto one = [&](const auto& eq, const auto& store) {
         auto a = store.get(i);
         eq.finish(a, i);
       };
-      (finish(std::get<I>(eqt), std::get<I>(acc)), ...);
-      then(i);
+      (one(std::get<I>(eqt), std::get<I>(acc)), ...);
+    };
+    if constexpr (std::is_invocable_v<const Then&, std::size_t>) {
+#pragma omp for simd schedule(static)
+      for (long ii = 0; ii < nn; ++ii) {
+        finish(static_cast<std::size_t>(ii));
+        then(static_cast<std::size_t>(ii));
+      }
+    } else {
+      // In blocks: the finish of a block, then then(b, e) over it (the time step's square roots
+      // and divisions, in a loop of its own that the compiler vectorises; in one loop with the
+      // finish they did not vectorise), the block's fields still in cache. A minimum is exact:
+      // the same for any thread count and any order.
+      constexpr auto kBlock = static_cast<long>(kParticleBlock);
+      const long blocks = (nn + kBlock - 1) / kBlock;
+#pragma omp for schedule(static) reduction(min : least)
+      for (long bb = 0; bb < blocks; ++bb) {
+        const long b = bb * kBlock, e = std::min(nn, b + kBlock);
+        for (long ii = b; ii < e; ++ii)
+          finish(static_cast<std::size_t>(ii));
+        least = std::min(least, static_cast<double>(then(static_cast<std::size_t>(b),
+                                                         static_cast<std::size_t>(e))));
+      }
     }
   }
+  return least;
 }
 
 }  // namespace detail
@@ -550,6 +578,16 @@ void sweep_then(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char
   detail::sweep_group<D, Kernel>(ctx, ps, then, std::index_sequence_for<Eqs...>{}, eqs...);
 }
 
+// As sweep_then, where then(b, e) returns a number for the real particles [b, e) after their
+// finish (the least time-step limit of a block, after the force sweep): returns the least of
+// them, taken in the same pass.
+template <int D, class Kernel, class Then, class... Eqs>
+double sweep_least(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char* name,
+                   const Then& then, Eqs&... eqs) {
+  PhaseClock::Scope timer(ctx.clock, name);
+  return detail::sweep_group<D, Kernel>(ctx, ps, then, std::index_sequence_for<Eqs...>{}, eqs...);
+}
+
 // A per-particle pass over the real particles (equation of state, stresses, body forces).
 template <class F>
 void for_each_real(std::size_t n_real, F&& f) {
@@ -557,6 +595,22 @@ void for_each_real(std::size_t n_real, F&& f) {
 #pragma omp parallel for schedule(static)
   for (long ii = 0; ii < n; ++ii)
     f(static_cast<std::size_t>(ii));
+}
+
+// The real particles in blocks [b, e) of kParticleBlock, in parallel: f(b, e) does a block's
+// work (loops over it that the compiler vectorises, the block's fields still in cache from one
+// loop to the next) and returns a number; returns the least of them, or init. A minimum is
+// exact, so it does not depend on the thread count.
+template <class T, class F>
+T least_over_blocks(std::size_t n_real, T init, F&& f) {
+  const auto blocks = static_cast<long>((n_real + kParticleBlock - 1) / kParticleBlock);
+  T least = init;
+#pragma omp parallel for schedule(static) reduction(min : least)
+  for (long bb = 0; bb < blocks; ++bb) {
+    const std::size_t b = static_cast<std::size_t>(bb) * kParticleBlock;
+    least = std::min(least, static_cast<T>(f(b, std::min(n_real, b + kParticleBlock))));
+  }
+  return least;
 }
 
 }  // namespace flume

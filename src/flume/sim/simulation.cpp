@@ -35,7 +35,8 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       walls_(std::move(walls)),
       scheme_(std::move(scheme)),
       phys_(std::move(physics)),
-      config_(config) {
+      config_(config),
+      limit_(phys_, config_.cfl) {
   ps_.drop_ghosts();
   ps_.use_only(scheme_->fields());
   // The pressure of the starting density, so that the state written before the first step
@@ -57,7 +58,12 @@ void Simulation<D>::prepare_neighbours(double range) {
                work_);
   }
   PhaseClock::Scope phase(&clock_, "boundaries");
-  walls_.build_halo(ps_, range, halo_);
+  // Only the particles of the cells near a wall can have images.
+  Vec<D> clear_lo, clear_hi;
+  walls_.clear_of_walls(range, clear_lo, clear_hi);
+  near_walls_.clear();
+  grid_.runs_outside(clear_lo, clear_hi, near_walls_);
+  walls_.build_halo(ps_, range, halo_, near_walls_);
   ghost_x_.resize(halo_.size());
   for (std::size_t g = 0; g < halo_.size(); ++g)
     ghost_x_[g] = halo_.position(ps_, g);
@@ -80,12 +86,12 @@ void Simulation<D>::step(double max_dt) {
   if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
     scheme_->filter_density(ps_, ctx, halo_);
 
-  scheme_->compute_accelerations(ps_, ctx, halo_);
+  // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
+  const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
 
   std::optional<PhaseClock::Scope> phase;
   phase.emplace(&clock_, "integration");
-  const double dt_rule =
-      config_.fixed_dt > 0.0 ? config_.fixed_dt : cfl_time_step(ps_, phys_, config_.cfl);
+  const double dt_rule = config_.fixed_dt > 0.0 ? config_.fixed_dt : dt_stable;
   if (steps_ == 0) first_dt_ = dt_rule;
   // A CFL step that shrinks by four orders of magnitude means particles are flying apart or
   // accelerating without bound: stop and say so instead of crawling on.
@@ -95,25 +101,29 @@ void Simulation<D>::step(double max_dt) {
                     "t = {:.6g} s, step {}: the simulation blew up",
                     dt_rule, first_dt_, time_, steps_));
   const double dt = std::min(dt_rule, max_dt);
+  // The drift moves the particles to t^{n+1}; in the same pass each is put back across the
+  // walls (standing where they are at t^{n+1}) and checked: the first bad one is reported.
+  walls_.set_time(time_ + dt);
+  const long none = static_cast<long>(ps_.n_real);
+  auto put_back_and_check = [&](std::size_t b, std::size_t e) {
+    walls_.put_back(ps_, b, e, range);
+    return first_unsound(b, e);
+  };
+  long bad = none;
   if (scheme_->evolves_density()) {
     integrator_.kick(ps_, dt);
     phase.reset();
     scheme_->compute_density_rate(ps_, ctx, halo_);
     phase.emplace(&clock_, "integration");
-    integrator_.advance_density(ps_, dt);
-    integrator_.drift(ps_, dt);
+    bad = integrator_.advance_density_and_drift(ps_, dt, none, put_back_and_check);
   } else {
-    integrator_.kick_and_drift(ps_, dt);
+    bad = integrator_.kick_and_drift(ps_, dt, none, put_back_and_check);
   }
-  phase.emplace(&clock_, "boundaries");
   ps_.drop_ghosts();
-  walls_.set_time(time_ + dt);  // the positions are now those of t^{n+1}
-  walls_.reflect_crossings(ps_, range);
   time_ += dt;
   last_dt_ = dt;
   ++steps_;
-  phase.emplace(&clock_, "checks");
-  check_state();
+  if (bad < none) report(static_cast<std::size_t>(bad));
 }
 
 template <int D>
@@ -128,42 +138,34 @@ std::size_t Simulation<D>::bytes() const {
 
 template <int D>
 void Simulation<D>::check_state() const {
-  // The first bad particle (lowest index), found in parallel; reported with its id.
-  const auto n = static_cast<long>(ps_.n_real);
-  long bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
-  for (long ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    bool ok = std::isfinite(ps_.rho[i]) && ps_.rho[i] > 0.0;
-    for (int k = 0; k < D; ++k)
-      ok = ok && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
-    if (!ok) bad = std::min(bad, ii);
-  }
-  if (bad < n) {
-    const auto i = static_cast<std::size_t>(bad);
-    bool finite = std::isfinite(ps_.rho[i]);
-    for (int k = 0; k < D; ++k)
-      finite = finite && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
-    if (!finite)
-      throw SimulationError(
-          fmt::format("non-finite state (NaN or infinity) of particle {} at t = {:.6g} s, step {}",
-                      ps_.id[i], time_, steps_));
+  // The first bad particle (lowest index), found in parallel.
+  const long none = static_cast<long>(ps_.n_real);
+  const long bad = least_over_blocks(
+      ps_.n_real, none, [&](std::size_t b, std::size_t e) { return first_unsound(b, e); });
+  if (bad < none) report(static_cast<std::size_t>(bad));
+}
+
+template <int D>
+void Simulation<D>::report(std::size_t i) const {
+  bool finite = std::isfinite(ps_.rho[i]);
+  for (int k = 0; k < D; ++k)
+    finite = finite && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
+  if (!finite)
+    throw SimulationError(
+        fmt::format("non-finite state (NaN or infinity) of particle {} at t = {:.6g} s, step {}",
+                    ps_.id[i], time_, steps_));
+  if (!(ps_.rho[i] > 0.0))
     throw SimulationError(
         fmt::format("density of particle {} fell to {:.4g} kg/m^3 at t = "
                     "{:.6g} s, step {}: the simulation blew up",
                     ps_.id[i], ps_.rho[i], time_, steps_));
-  }
-  const long out = walls_.first_outside(ps_);
-  if (out >= 0) {
-    const auto i = static_cast<std::size_t>(out);
-    std::string pos;
-    for (int k = 0; k < D; ++k)
-      pos += fmt::format("{}{:.6g}", k ? ", " : "", ps_.x[i][k]);
-    throw SimulationError(
-        fmt::format("particle {} lost: it left the domain at ({}) m, t = {:.6g} "
-                    "s, step {}",
-                    ps_.id[i], pos, time_, steps_));
-  }
+  std::string pos;
+  for (int k = 0; k < D; ++k)
+    pos += fmt::format("{}{:.6g}", k ? ", " : "", ps_.x[i][k]);
+  throw SimulationError(
+      fmt::format("particle {} lost: it left the domain at ({}) m, t = {:.6g} "
+                  "s, step {}",
+                  ps_.id[i], pos, time_, steps_));
 }
 
 template void sort_state<2>(ParticleSet<2>&, const std::vector<std::uint32_t>&, SweepWorkspace&);

@@ -1,8 +1,10 @@
 // One running simulation: particles, scheme, walls, integrator and neighbour search, advanced
 // step by step. No I/O here: the runner decides what to write and when.
-// Each step: sort by cell -> ghosts -> scheme's groups -> leap-frog -> walls -> checks.
+// Each step: sort by cell -> ghosts -> scheme's groups (with the CFL step) -> leap-frog, with
+// the walls' put-back and the checks in the drift's pass.
 #pragma once
 
+#include <cmath>
 #include <memory>
 
 #include "flume/boundaries/box_walls.hpp"
@@ -46,18 +48,39 @@ class Simulation {
  private:
   // Sorts the real particles by cell and builds the ghosts, binned into the same grid.
   void prepare_neighbours(double range);
+  // The first of the real particles [b, e) that is not sound (a non-finite state, a density
+  // <= 0, outside the box), or n_real if none. Without branches on the particle: the loop
+  // vectorises.
+  long first_unsound(std::size_t b, std::size_t e) const {
+    const long none = static_cast<long>(ps_.n_real);
+    long first = none;
+#pragma omp simd reduction(min : first)
+    for (std::size_t i = b; i < e; ++i) {
+      bool ok = std::isfinite(ps_.rho[i]) & (ps_.rho[i] > 0.0);
+      for (int k = 0; k < D; ++k)
+        ok = ok & std::isfinite(ps_.x[i][k]) & std::isfinite(ps_.v[i][k]);
+      ok = ok & walls_.inside(ps_, i);
+      first = std::min(first, ok ? none : static_cast<long>(i));
+    }
+    return first;
+  }
+  // Throws SimulationError if a real particle is not sound (the first one, by index).
   void check_state() const;
+  // Throws the SimulationError that says what is wrong with particle i.
+  [[noreturn]] void report(std::size_t i) const;
 
   ParticleSet<D> ps_;
   BoxWalls<D> walls_;
   std::unique_ptr<Scheme<D>> scheme_;
   Physics<D> phys_;
   SimulationConfig<D> config_;
+  StepLimit<D> limit_;  // the CFL rule's per-particle limits (time_step.hpp)
   LeapFrog<D> integrator_;
   Halo<D> halo_;
   CellGrid<D> grid_;
   SweepWorkspace work_;
   std::vector<Vec<D>> ghost_x_;  // ghost positions before sorting (reused)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> near_walls_;  // runs of particles (reused)
   double time_ = 0.0;
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;  // the step rule's first value, s
