@@ -245,6 +245,46 @@ TEST(Sweep, SumsAreBitIdenticalForAnyThreadCount) {
     }
 }
 
+// sweep_least hands then(b, e) blocks that cover the real particles once each, after their
+// finish, and returns the least value: each particle's value here is distinct, and the least
+// one is put on every particle in turn of a few positions (first, last, the ends of blocks),
+// so a block that skipped a particle or an end would return a larger value.
+TEST(Sweep, SweepLeastCoversEveryParticleOnceAndReturnsTheLeast) {
+  const ThreadCount restore;
+  const auto x = uniform_cloud<2>(3000, 0.0, 1.0, 99);
+  auto ps = particles<2>(x, 0.02);
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    for (const std::size_t least_at : {std::size_t{0}, kParticleBlock - 1, kParticleBlock,
+                                       2 * kParticleBlock - 1, x.size() - 1}) {
+      test::in_cell_order(
+          CubicSpline<2>::support, ps, static_cast<const BoxWalls<2>*>(nullptr),
+          [&](ParticleSet<2>& s, const SweepContext<2>& ctx, const Halo<2>&) {
+            std::vector<PairTally> tally(s.n_real);
+            std::vector<int> seen(s.n_real, 0);
+            CountPairs<2> eq{s, tally};
+            // The value of the particle with caller's index id: 1 + id, or 0 at least_at.
+            const double least = sweep_least<2, CubicSpline<2>>(
+                ctx, s, "count",
+                [&](std::size_t b, std::size_t e) {
+                  double m = std::numeric_limits<double>::infinity();
+                  for (std::size_t i = b; i < e; ++i) {
+                    ++seen[i];
+                    EXPECT_GT(tally[i].count, 0.0) << "then() before the finish of " << i;
+                    const auto id = static_cast<std::size_t>(s.id[i]);
+                    m = std::min(m, id == least_at ? 0.0 : 1.0 + static_cast<double>(id));
+                  }
+                  return m;
+                },
+                eq);
+            EXPECT_EQ(least, 0.0) << threads << " threads, least at " << least_at;
+            for (std::size_t i = 0; i < s.n_real; ++i)
+              ASSERT_EQ(seen[i], 1) << "particle " << i;
+          });
+    }
+  }
+}
+
 TEST(CellGrid, NonFinitePositionThrows) {
   for (const double bad :
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
