@@ -130,7 +130,8 @@ TEST(CaseReader, MovingWalls) {
                        {"moving_walls[0].speed", "unknown key"});
 }
 
-// [validation] pictures: times within the run, numbers; diagnostics_plots: strings.
+// [validation] pictures: times >= 0, numbers, those after the end left out;
+// diagnostics_plots: strings.
 TEST(CaseReader, PictureTimesAndDiagnosticsPlots) {
   const auto spec = test::spec_from(
       kValid,
@@ -138,8 +139,11 @@ TEST(CaseReader, PictureTimesAndDiagnosticsPlots) {
   EXPECT_EQ(spec.pictures, (std::vector<double>{0.0, 0.005}));
   EXPECT_EQ(spec.picture_field, "velocity_x");
   EXPECT_EQ(spec.diagnostics_plots, (std::vector<std::string>{"angular_momentum"}));
-  expect_one_line_with(error_of(kValid, {"validation.pictures=[0.5]"}),
-                       {"validation.pictures", "within the run"});
+  expect_one_line_with(error_of(kValid, {"validation.pictures=[-0.5]"}),
+                       {"validation.pictures", ">= 0"});
+  // Times after the end are left out (a run shortened with --set keeps working).
+  EXPECT_EQ(test::spec_from(kValid, {"validation.pictures=[0.0, 0.5]"}).pictures,
+            (std::vector<double>{0.0}));
   expect_one_line_with(error_of(kValid, {"validation.pictures=[\"late\"]"}),
                        {"validation.pictures", "array of numbers"});
   expect_one_line_with(error_of(kValid, {"validation.variants=[1.0]"}),

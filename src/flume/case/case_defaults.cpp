@@ -84,7 +84,7 @@ quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (va
 time_scale = 1.0       # s; the references' time is t / time_scale
 notes = []             # the papers' own numbers, quoted in the report
 variants = []          # "KEY=VALUE": other configurations run and reported beside the case
-pictures = []          # s: particle pictures (PNG) of every configuration near these times
+pictures = []          # s: particle pictures (PNG) of every configuration near these times (later than end_time: left out)
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
 diagnostics_plots = []  # diagnostics.csv columns plotted against time for every configuration
 
