@@ -34,7 +34,6 @@ struct Prepared {
   CellGrid<2> grid;
   Halo<2> halo;
   SweepWorkspace work;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
   double range = 0.0;
 
   explicit Prepared(long n) {
@@ -61,11 +60,7 @@ struct Prepared {
   void prepare() {
     ps.drop_ghosts();
     sort_state(ps, grid.sort_real(std::span<const Vec<2>>(ps.x.data(), ps.n_real), range), work);
-    Vec<2> clear_lo, clear_hi;  // as the simulation does: only the cells near the walls
-    walls.clear_of_walls(range, clear_lo, clear_hi);
-    near.clear();
-    grid.runs_outside(clear_lo, clear_hi, near);
-    walls.build_halo(ps, range, halo, near);
+    walls.build_halo(ps, range, halo, grid);  // as the simulation does
     std::vector<Vec<2>> gx(halo.size());
     for (std::size_t g = 0; g < halo.size(); ++g)
       gx[g] = halo.position(ps, g);

@@ -35,13 +35,7 @@ void in_cell_order(double support, ParticleSet<D>& ps, const BoxWalls<D>* walls,
       field[k] = copy[order[k]];
   });
   Halo<D> halo;
-  if (walls) {  // as a simulation step builds it: from the cells near the walls
-    Vec<D> clear_lo, clear_hi;
-    walls->clear_of_walls(range, clear_lo, clear_hi);
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
-    grid.runs_outside(clear_lo, clear_hi, near);
-    walls->build_halo(sorted, range, halo, near);
-  }
+  if (walls) walls->build_halo(sorted, range, halo, grid);  // as a simulation step builds it
   std::vector<Vec<D>> gx(halo.size());
   for (std::size_t g = 0; g < halo.size(); ++g)
     gx[g] = halo.position(sorted, g);

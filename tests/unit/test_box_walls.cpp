@@ -573,8 +573,8 @@ TEST(MovingWall, PutBackAndEscapeUseTheWallsPresentPlace) {
   EXPECT_EQ(box.first_outside(ps), 1);
 }
 
-// A simulation builds the halo from the particles of the cells near the walls only
-// (CellGrid::runs_outside of clear_of_walls); it must be the halo built from every particle,
+// A simulation builds the halo from the particles of the cells near the walls only (the grid
+// overload of build_halo); it must be the halo built from every particle,
 // map for map and in the same order. Free-slip, no-slip and open sides, a moving wall placed
 // away from its rest position, 2D and 3D.
 template <int D>
@@ -594,12 +594,8 @@ void expect_halo_from_near_cells_is_the_full_halo(BoxWalls<D> box, double range,
   ParticleSet<D> sorted = ps;
   for (std::size_t k = 0; k < order.size(); ++k)
     sorted.x[k] = ps.x[order[k]];
-  Vec<D> clear_lo, clear_hi;
-  box.clear_of_walls(range, clear_lo, clear_hi);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> near;
-  grid.runs_outside(clear_lo, clear_hi, near);
   Halo<D> fast, full;
-  box.build_halo(sorted, range, fast, near);
+  box.build_halo(sorted, range, fast, grid);
   box.build_halo(sorted, range, full);
   ASSERT_GT(full.size(), 0u);
   ASSERT_EQ(fast.size(), full.size());

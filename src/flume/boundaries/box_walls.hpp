@@ -22,6 +22,7 @@
 
 #include "flume/boundaries/halo.hpp"
 #include "flume/boundaries/wall_motion.hpp"
+#include "flume/neighbors/cell_grid.hpp"
 
 namespace flume {
 
@@ -60,44 +61,22 @@ struct BoxWalls {
   }
 
   // Rebuilds the halo: one ghost per (particle, non-empty set of nearby walls with at most one
-  // wall per axis). range is the kernel support radius. Only the particles of `runs` (ranges of
-  // indices, increasing; CellGrid::runs_outside of clear_of_walls) are looked at: every
-  // particle with an image must be in one. Deterministic order: by particle, then by wall
-  // combination (a count per particle, a prefix sum, then a parallel fill).
+  // wall per axis). range is the kernel support radius. ps is sorted into grid (a simulation
+  // step's order): only the particles of the cells near the walls are looked at
+  // (CellGrid::runs_outside of clear_of_walls), since no other particle has an image.
+  // Deterministic order: by particle, then by wall combination.
   void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo,
-                  std::span<const std::pair<std::uint32_t, std::uint32_t>> runs) const {
-    std::vector<std::uint32_t>& near = near_;
-    near.clear();
-    for (const auto& [b, e] : runs)
-      for (std::uint32_t i = b; i < e; ++i)
-        near.push_back(i);
-    const auto n = static_cast<long>(near.size());
-    std::vector<std::uint32_t>& first = first_ghost_;
-    first.resize(near.size() + 1);
-#pragma omp parallel for schedule(static)
-    for (long kk = 0; kk < n; ++kk) {
-      const auto k = static_cast<std::size_t>(kk);
-      first[k + 1] =
-          static_cast<std::uint32_t>(for_each_image(ps.x[near[k]], range, [](auto&&) {}));
-    }
-    first[0] = 0;
-    for (std::size_t k = 0; k < near.size(); ++k)
-      first[k + 1] += first[k];
-    auto& maps = halo.resize(first[near.size()]);
-#pragma omp parallel for schedule(static)
-    for (long kk = 0; kk < n; ++kk) {
-      const auto k = static_cast<std::size_t>(kk);
-      std::size_t g = first[k];
-      for_each_image(ps.x[near[k]], range, [&](GhostMap<D> map) {
-        map.source = near[k];
-        maps[g++] = map;
-      });
-    }
+                  const CellGrid<D>& grid) const {
+    Vec<D> inner_lo, inner_hi;
+    clear_of_walls(range, inner_lo, inner_hi);
+    runs_.clear();
+    grid.runs_outside(inner_lo, inner_hi, runs_);
+    build_halo_of(ps, range, halo, runs_);
   }
-  // The same, looking at every real particle.
+  // The same, looking at every real particle (in any order).
   void build_halo(const ParticleSet<D>& ps, double range, Halo<D>& halo) const {
     const std::pair<std::uint32_t, std::uint32_t> all{0, static_cast<std::uint32_t>(ps.n_real)};
-    build_halo(ps, range, halo, std::span(&all, 1));
+    build_halo_of(ps, range, halo, std::span(&all, 1));
   }
 
   // Calls f(map) for each mirror image of a particle at x (source not set); returns how many.
@@ -190,12 +169,46 @@ struct BoxWalls {
     return first < n ? first : -1;
   }
 
-  // Scratch of build_halo (reused between steps): the particles looked at, and the index of
-  // each one's first ghost.
+  // Scratch of build_halo (reused between steps): the runs of particles near the walls, the
+  // particles looked at, and the index of each one's first ghost.
+  mutable std::vector<std::pair<std::uint32_t, std::uint32_t>> runs_;
   mutable std::vector<std::uint32_t> near_;
   mutable std::vector<std::uint32_t> first_ghost_;
 
  private:
+  // build_halo over the particles of `runs` (ranges of indices, increasing): a count per
+  // particle, a prefix sum, then a parallel fill.
+  void build_halo_of(const ParticleSet<D>& ps, double range, Halo<D>& halo,
+                     std::span<const std::pair<std::uint32_t, std::uint32_t>> runs) const {
+    std::vector<std::uint32_t>& near = near_;
+    near.clear();
+    for (const auto& [b, e] : runs)
+      for (std::uint32_t i = b; i < e; ++i)
+        near.push_back(i);
+    const auto n = static_cast<long>(near.size());
+    std::vector<std::uint32_t>& first = first_ghost_;
+    first.resize(near.size() + 1);
+#pragma omp parallel for schedule(static)
+    for (long kk = 0; kk < n; ++kk) {
+      const auto k = static_cast<std::size_t>(kk);
+      first[k + 1] =
+          static_cast<std::uint32_t>(for_each_image(ps.x[near[k]], range, [](auto&&) {}));
+    }
+    first[0] = 0;
+    for (std::size_t k = 0; k < near.size(); ++k)
+      first[k + 1] += first[k];
+    auto& maps = halo.resize(first[near.size()]);
+#pragma omp parallel for schedule(static)
+    for (long kk = 0; kk < n; ++kk) {
+      const auto k = static_cast<std::size_t>(kk);
+      std::size_t g = first[k];
+      for_each_image(ps.x[near[k]], range, [&](GhostMap<D> map) {
+        map.source = near[k];
+        maps[g++] = map;
+      });
+    }
+  }
+
   // put_back across the wall on `Side` of axis K (compile-time, so that the particle loop
   // indexes fixed components and vectorises).
   template <int K, int Side>

@@ -14,7 +14,7 @@
 #pragma once
 
 #include "flume/core/particle_set.hpp"
-#include "flume/schemes/sweep.hpp"
+#include "flume/schemes/particle_passes.hpp"
 
 namespace flume {
 

@@ -35,6 +35,7 @@
 #include "flume/equations/own.hpp"
 #include "flume/equations/pair.hpp"
 #include "flume/neighbors/cell_grid.hpp"
+#include "flume/schemes/particle_passes.hpp"
 #include "flume/schemes/sweep_workspace.hpp"
 #include "flume/sim/phase_clock.hpp"
 
@@ -47,9 +48,6 @@
 #endif
 
 namespace flume {
-
-// Particles per block of the per-particle passes that work block by block (least_over_blocks).
-inline constexpr std::size_t kParticleBlock = 512;
 
 // What a sweep needs besides the particles: the cell grid of this step, scratch arrays, the
 // common smoothing length when every particle has the same one (else 0), and the clock that
@@ -586,31 +584,6 @@ double sweep_least(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const c
                    const Then& then, Eqs&... eqs) {
   PhaseClock::Scope timer(ctx.clock, name);
   return detail::sweep_group<D, Kernel>(ctx, ps, then, std::index_sequence_for<Eqs...>{}, eqs...);
-}
-
-// A per-particle pass over the real particles (equation of state, stresses, body forces).
-template <class F>
-void for_each_real(std::size_t n_real, F&& f) {
-  const auto n = static_cast<long>(n_real);
-#pragma omp parallel for schedule(static)
-  for (long ii = 0; ii < n; ++ii)
-    f(static_cast<std::size_t>(ii));
-}
-
-// The real particles in blocks [b, e) of kParticleBlock, in parallel: f(b, e) does a block's
-// work (loops over it that the compiler vectorises, the block's fields still in cache from one
-// loop to the next) and returns a number; returns the least of them, or init. A minimum is
-// exact, so it does not depend on the thread count.
-template <class T, class F>
-T least_over_blocks(std::size_t n_real, T init, F&& f) {
-  const auto blocks = static_cast<long>((n_real + kParticleBlock - 1) / kParticleBlock);
-  T least = init;
-#pragma omp parallel for schedule(static) reduction(min : least)
-  for (long bb = 0; bb < blocks; ++bb) {
-    const std::size_t b = static_cast<std::size_t>(bb) * kParticleBlock;
-    least = std::min(least, static_cast<T>(f(b, std::min(n_real, b + kParticleBlock))));
-  }
-  return least;
 }
 
 }  // namespace flume

@@ -58,12 +58,7 @@ void Simulation<D>::prepare_neighbours(double range) {
                work_);
   }
   PhaseClock::Scope phase(&clock_, "boundaries");
-  // Only the particles of the cells near a wall can have images.
-  Vec<D> clear_lo, clear_hi;
-  walls_.clear_of_walls(range, clear_lo, clear_hi);
-  near_walls_.clear();
-  grid_.runs_outside(clear_lo, clear_hi, near_walls_);
-  walls_.build_halo(ps_, range, halo_, near_walls_);
+  walls_.build_halo(ps_, range, halo_, grid_);
   ghost_x_.resize(halo_.size());
   for (std::size_t g = 0; g < halo_.size(); ++g)
     ghost_x_[g] = halo_.position(ps_, g);

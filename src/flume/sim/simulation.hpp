@@ -80,7 +80,6 @@ class Simulation {
   CellGrid<D> grid_;
   SweepWorkspace work_;
   std::vector<Vec<D>> ghost_x_;  // ghost positions before sorting (reused)
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> near_walls_;  // runs of particles (reused)
   double time_ = 0.0;
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;  // the step rule's first value, s
