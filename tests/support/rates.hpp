@@ -57,7 +57,8 @@ void in_cell_order(double support, ParticleSet<D>& ps, const BoxWalls<D>* walls,
 
 // Fills, for the real particles of ps: ps.a (and ps.rho, ps.p for a summation density; ps.p,
 // ps.grad_v, ps.stress, ps.shepard, ps.gamma, ps.L as the scheme computes them) and, for a
-// scheme that evolves density, ps.drho evaluated with the velocity field ps.v_half. Ghosts of
+// scheme that evolves density (energy, smoothing length), ps.drho (ps.de, ps.dh) evaluated with
+// the velocity field ps.v_half. Ghosts of
 // the walls (if any) are built as a simulation step builds them and dropped afterwards.
 template <int D>
 void compute_rates(const Scheme<D>& scheme, ParticleSet<D>& ps,
@@ -66,7 +67,7 @@ void compute_rates(const Scheme<D>& scheme, ParticleSet<D>& ps,
                 [&](ParticleSet<D>& s, const SweepContext<D>& ctx, const Halo<D>& halo) {
                   // The time step it returns is not needed here (the CFL number is any).
                   scheme.compute_accelerations(s, ctx, halo, StepLimit<D>{});
-                  if (scheme.evolves_density()) scheme.compute_density_rate(s, ctx, halo);
+                  scheme.compute_state_rates(s, ctx, halo, s.v_half);
                 });
 }
 

@@ -54,6 +54,7 @@ class Halo {
     ps.reserve(n + maps_.size());
     ps.resize(n + maps_.size());
     const auto count = static_cast<long>(maps_.size());
+    const bool energy = ps.uses(kFieldEnergy);
 #pragma omp parallel for schedule(static)
     for (long gg = 0; gg < count; ++gg) {
       const auto g = static_cast<std::size_t>(gg);
@@ -69,6 +70,7 @@ class Halo {
       ps.h[i] = ps.h[s];
       ps.p[i] = ps.p[s];
       ps.c[i] = ps.c[s];
+      if (energy) ps.e[i] = ps.e[s];  // W 6.1: ghosts copy the internal energy too
     }
   }
 

@@ -33,6 +33,7 @@ WallKind wall_kind(const std::string& s) {
 template <int D>
 Physics<D> build_physics(const CaseSpec& spec) {
   Physics<D> phys;
+  phys.eos.kind = spec.eos == "ideal_gas" ? EosKind::ideal_gas : EosKind::tait;
   phys.eos.rho0 = spec.rho0;
   phys.eos.gamma = spec.gamma;
   phys.eos.kappa = spec.bulk_modulus;
@@ -193,25 +194,28 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   ParticleSet<D> ps;
   // No optional field yet: the Simulation allocates those its scheme uses (use_only). Filled
   // here, they would set the peak memory of the run (128 bytes a particle in 2D).
-  ps.optional = 0;
+  ps.optional = phys.eos.is_gas() ? kFieldEnergy : 0u;  // a gas's e is state, set below
   const double dx = spec.spacing;
   const double g = norm(phys.gravity);
-  const double h = spec.h_over_dx * dx;
   std::int64_t next_id = 0;
   std::vector<std::vector<Vec<D>>> positions;
   std::size_t particles = 0;  // reserved up front: growth by doubling would inflate the peak memory
   for (const auto& block : spec.blocks) {
-    positions.push_back(block_positions<D>(block, dx));
+    positions.push_back(block_positions<D>(block, block.spacing > 0.0 ? block.spacing : dx));
     particles += positions.back().size();
   }
   ps.reserve(particles);
   for (std::size_t b = 0; b < spec.blocks.size(); ++b) {
     const FluidBlock& block = spec.blocks[b];
+    // A block may have a lattice spacing of its own (equal masses across a density jump); its
+    // smoothing length follows it, h = h_over_dx * spacing.
+    const double block_dx = block.spacing > 0.0 ? block.spacing : dx;
+    const double h = spec.h_over_dx * block_dx;
     const double top = block.max[D - 1];
     // A lattice particle carries the volume of its cell; random ones share the shape's.
     const double volume = block.layout == "random"
                               ? shape_volume<D>(block) / static_cast<double>(block.count)
-                              : std::pow(dx, D);
+                              : std::pow(block_dx, D);
     Vec<D> centre;
     for (int k = 0; k < D; ++k)
       centre[k] =
@@ -221,9 +225,11 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
       for (int r = 0; r < D; ++r)
         for (int c = 0; c < D; ++c)
           v[r] += block.velocity_gradient[static_cast<std::size_t>(r * D + c)] * (x[c] - centre[c]);
-      const double rho =
-          block.hydrostatic ? phys.eos.hydrostatic_density(g * (top - x[D - 1])) : phys.eos.rho0;
+      const double rho = block.density > 0.0 ? block.density
+                         : block.hydrostatic ? phys.eos.hydrostatic_density(g * (top - x[D - 1]))
+                                             : phys.eos.rho0;
       ps.add_real(next_id++, x, v, rho * volume, rho, h);
+      if (ps.uses(kFieldEnergy)) ps.e[ps.n_real - 1] = block.internal_energy;
     }
   }
   return ps;
@@ -241,9 +247,13 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   }
   for (const auto& mw : spec.moving_walls)
     walls.motion[mw.axis][mw.side] = WallMotion{mw.velocity, mw.amplitude, mw.period};
-  auto scheme = make_scheme<D>(SchemeRows{spec.density, spec.force, spec.correction},
-                               *kernel_from_name(spec.kernel), phys);
+  auto scheme =
+      make_scheme<D>(SchemeRows{spec.density, spec.force, spec.correction, spec.smoothing_length},
+                     *kernel_from_name(spec.kernel), phys);
   SimulationConfig<D> config;
+  config.integrator = spec.integrator == "runge_kutta"            ? Integrator::runge_kutta
+                      : spec.integrator == "modified_runge_kutta" ? Integrator::modified_runge_kutta
+                                                                  : Integrator::leap_frog;
   config.cfl = spec.cfl;
   config.fixed_dt = spec.dt;
   config.shepard_every = spec.shepard_every;

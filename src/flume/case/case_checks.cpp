@@ -121,13 +121,14 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   const SchemeRows rows = *preset_rows(s.preset);
   s.density = r.str("scheme.density").empty()
                   ? rows.density
-                  : r.one_of("scheme.density", {"summation", "continuity"});
-  s.force = r.str("scheme.force").empty() ? rows.force
-                                          : r.one_of("scheme.force", {"bl7", "bl20", "bl59"});
-  s.correction =
-      r.str("scheme.correction").empty()
-          ? rows.correction
-          : r.one_of("scheme.correction", {"none", "gradient", "shepard", "first_order", "mixed"});
+                  : r.one_of("scheme.density", {"summation", "continuity", "w350", "w379"});
+  s.force = r.str("scheme.force").empty()
+                ? rows.force
+                : r.one_of("scheme.force", {"bl7", "bl20", "bl59", "w351", "w380"});
+  s.correction = r.str("scheme.correction").empty()
+                     ? rows.correction
+                     : r.one_of("scheme.correction", {"none", "gradient", "shepard", "first_order",
+                                                      "mixed", "renormalized"});
   const auto& combos = scheme_combinations();
   const auto has = [&](const std::string& prefix) {
     return std::any_of(combos.begin(), combos.end(),
@@ -144,13 +145,19 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
                        "available density+force+correction: {}",
                        s.correction, s.density, s.force, fmt::join(combos, ", ")));
   s.h_over_dx = r.in_range("scheme.h_over_dx", 0.5, 4.0);
-  r.one_of("scheme.integrator", {"leapfrog"});
+  s.integrator = r.one_of("scheme.integrator", {"leapfrog", "runge_kutta", "modified_runge_kutta"});
+  s.smoothing_length = r.one_of("scheme.smoothing_length", {"fixed", "evolving"});
+  if (s.smoothing_length == "evolving" && s.density != "w350" && s.density != "w379")
+    r.fail("scheme.smoothing_length",
+           fmt::format("= \"evolving\" (W (2.22)) is for the thesis's schemes (density w350 or "
+                       "w379: sph-euler, wsph, rsph), not density \"{}\"",
+                       s.density));
   s.cfl = r.in_range("scheme.cfl", 1e-6, 1.0);
   s.alpha = r.non_negative("scheme.alpha");
   s.beta = r.non_negative("scheme.beta");
   s.shepard_every = static_cast<int>(r.integer("scheme.shepard_every"));
   if (s.shepard_every < 0) r.fail("scheme.shepard_every", "must be >= 0 (0 = off)");
-  if (s.shepard_every > 0 && s.density != "continuity")
+  if (s.shepard_every > 0 && s.density == "summation")
     r.fail("scheme.shepard_every",
            fmt::format("filters an evolved density; with density \"{}\" (recomputed every "
                        "step) it must be 0",
@@ -160,8 +167,16 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.mu = r.non_negative("fluid.viscosity");
   s.gravity = r.vec("fluid.gravity");
 
-  r.one_of("eos.kind", {"tait"});
+  s.eos = r.one_of("eos.kind", {"tait", "ideal_gas"});
+  const bool gas_scheme = s.force == "w351" || s.force == "w380";
+  if (s.eos == "ideal_gas" && !gas_scheme)
+    r.fail("eos.kind",
+           fmt::format("= \"ideal_gas\" needs a scheme with an energy equation (sph-euler, wsph, "
+                       "rsph: force w351 or w380); force \"{}\" has none",
+                       s.force));
   s.gamma = r.in_range("eos.gamma", 1.0, 20.0);
+  if (s.eos == "ideal_gas" && !(s.gamma > 1.0))
+    r.fail("eos.gamma", "must exceed 1 for an ideal gas (p = (gamma - 1) rho e)");
   s.bulk_modulus = r.non_negative("eos.bulk_modulus");
   s.sound_speed = r.non_negative("eos.sound_speed");
   const double ratio = r.positive("eos.speed_ratio");
@@ -228,6 +243,16 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     fb.max = r.vec(key + ".max");
     fb.velocity = r.vec(key + ".velocity");
     fb.hydrostatic = r.boolean(key + ".hydrostatic");
+    fb.density = r.non_negative(key + ".density");
+    fb.internal_energy = r.non_negative(key + ".internal_energy");
+    fb.spacing = r.non_negative(key + ".spacing");
+
+    if (fb.density > 0.0 && fb.hydrostatic)
+      r.fail(key + ".density", "is a uniform density: set hydrostatic = false with it");
+    if (s.eos == "ideal_gas" && fb.hydrostatic)
+      r.fail(key + ".hydrostatic", "must be false for an ideal gas (a gas block starts uniform)");
+    if (s.eos == "ideal_gas" && !(fb.internal_energy > 0.0))
+      r.fail(key + ".internal_energy", "must be > 0 for an ideal gas (its e, J/kg)");
     fb.velocity_gradient = r.vec(key + ".velocity_gradient");
     if (fb.velocity_gradient.size() != static_cast<std::size_t>(dim * dim))
       r.fail(
@@ -244,6 +269,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       r.fail(key + ".count", "is for layout = \"random\" (a lattice's count follows the spacing)");
     if (fb.seed < 0) r.fail(key + ".seed", fmt::format("= {}: must be >= 0", fb.seed));
     fb.min_distance = r.in_range(key + ".min_distance", 0.0, 1.0);
+    if (fb.spacing > 0.0 && fb.layout == "random")
+      r.fail(key + ".spacing", "is a lattice's spacing: not for layout = \"random\"");
     for (int k = 0; k < dim; ++k) {
       if (!(fb.min[k] < fb.max[k]))
         r.fail(key + ".max", fmt::format("must exceed min along {}", axis_name(k)));
@@ -259,7 +286,9 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   // Sound speed and bulk modulus: kappa = rho0 c0^2 / gamma, c0 = m u_max, u_max = sqrt(2 g H)
   // (BL (64), (66)) unless given.
   double c0 = 0.0;
-  if (s.bulk_modulus > 0.0) {
+  if (s.eos == "ideal_gas") {
+    // A gas has no reference sound speed: each particle's own, from its p and rho.
+  } else if (s.bulk_modulus > 0.0) {
     c0 = std::sqrt(s.gamma * s.bulk_modulus / s.rho0);
   } else if (s.sound_speed > 0.0) {
     c0 = s.sound_speed;
@@ -276,10 +305,20 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     c0 = ratio * u_max;
   }
   s.sound_speed = c0;
-  s.bulk_modulus = s.rho0 * c0 * c0 / s.gamma;
+  s.bulk_modulus = s.rho0 * c0 * c0 / s.gamma;  // 0 for a gas
 
   s.output_interval = r.positive("output.interval");
   s.snapshot_interval = r.non_negative("output.snapshot_interval");
+  s.profile = r.boolean("output.profile");
+  {
+    std::vector<std::string> axes;
+    for (int k = 0; k < dim; ++k)
+      axes.emplace_back(axis_name(k));
+    const std::string axis = r.one_of("output.profile_axis", axes);
+    s.profile_axis = static_cast<int>(std::find(axes.begin(), axes.end(), axis) - axes.begin());
+  }
+  s.profile_at = r.num("output.profile_at");
+  s.profile_band = r.positive("output.profile_band");
 
   s.surge_front = r.boolean("probes.surge_front");
   s.column_height = r.boolean("probes.column_height");
@@ -349,6 +388,22 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       if (cc.window_to != 0.0 && !(cc.window_to > cc.window_from))
         r.fail(key + ".window_to", "must exceed window_from (or be 0: to the last point)");
       s.curves.push_back(cc);
+    }
+  }
+  if (const auto* profiles = t.at_path("validation.profiles").as_array()) {
+    for (std::size_t c = 0; c < profiles->size(); ++c) {
+      const std::string key = fmt::format("validation.profiles[{}]", c);
+      ProfileCheck pc;
+      pc.field = r.one_of(key + ".field", {"rho", "p", "u"});
+      pc.theory = r.one_of(key + ".reference", {"theory:riemann"}).substr(7);
+      if (!s.profile) r.fail(key, "compares profile.csv: set output.profile = true");
+      if (s.eos != "ideal_gas" || s.blocks.size() != 2)
+        r.fail(key + ".reference",
+               "= \"theory:riemann\" needs an ideal gas in two fluid blocks (left, right)");
+      pc.tolerance = r.positive(key + ".tolerance");
+      pc.quick_tolerance = r.positive(key + ".quick_tolerance");
+      pc.gated = r.boolean(key + ".gated");
+      s.profiles.push_back(pc);
     }
   }
   return s;

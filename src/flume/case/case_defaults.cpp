@@ -24,16 +24,24 @@ dt = 0.0               # fixed time step, s; 0 = the CFL rule of BL (63)
 spacing = 0.001        # initial particle spacing dx, m (particles on a square lattice)
 
 [scheme]
-preset = "continuity"  # standard | continuity | inconsistent | csph (spec/methods.md)
+preset = "continuity"  # standard | continuity | inconsistent | csph | sph-euler | wsph | rsph
+                       # (spec/methods.md)
 kernel = "cubic_spline"  # cubic_spline | quintic_spline | gaussian | wendland_c2
 h_over_dx = 1.3        # smoothing length h = h_over_dx * spacing
-density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4))
-force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20)) | bl59 (CSPH)
+density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4)) |
+                       # w350 (W (3.50)) | w379 (W (3.79), sign corrected)
+force = ""             # override of the preset's row: bl7 (BL (7)) | bl20 (BL (20)) | bl59 (CSPH) |
+                       # w351 (W (3.51)-(3.52)) | w380 (W (3.80)-(3.81)); the W forces carry
+                       # their energy equations and pair with their own density row
 correction = ""        # override of the preset's row (BL section 4): none | shepard (BL (53)) |
                        # first_order (BL (47)-(52)) with a summation density (the density's
                        # kernel); none | gradient (BL (42)-(45)) | shepard (BL (53), (57)) |
-                       # mixed (CSPH, BL (54)-(58)) with a continuity density (its gradient)
-integrator = "leapfrog"  # BL (61)-(62)
+                       # mixed (CSPH, BL (54)-(58)) with a continuity density (its gradient);
+                       # none | renormalized (R-SPH, W (4.8)-(4.16)) with w379 + w380
+integrator = "leapfrog"  # leapfrog (BL (61)-(62)) | runge_kutta (W (3.85)-(3.87)) |
+                       # modified_runge_kutta (W (3.92), keeps linear momentum)
+smoothing_length = "fixed"  # fixed | evolving (W (2.22) with the scheme's own d rho/dt; an
+                       # evolved density only)
 cfl = 0.3              # Courant number C_FL of BL (63)
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off
 beta = 0.0             # artificial viscosity beta, W (3.18)
@@ -46,8 +54,9 @@ viscosity = 0.0        # dynamic viscosity mu, Pa s (BL (22)-(25)); 0 = inviscid
 gravity = {gravity}    # m/s^2
 
 [eos]
-kind = "tait"          # Tait BL (60), gamma, p_atm = 0
-gamma = 7.0
+kind = "tait"          # tait: BL (60), gamma, p_atm = 0 | ideal_gas: p = (gamma - 1) rho e, e
+                       # from the fluid blocks (W's schemes only: they carry its energy)
+gamma = 7.0            # Tait exponent, or the gas's ratio of specific heats
 bulk_modulus = 0.0     # kappa, Pa; 0 = from sound_speed
 sound_speed = 0.0      # c0, m/s; 0 = speed_ratio * max_flow_speed (BL (64))
 speed_ratio = 10.0     # m of BL (64): c0 = m u_max
@@ -66,6 +75,11 @@ y_max = "free_slip"
 [output]
 interval = 0.01        # s between rows of diagnostics.csv and probes.csv
 snapshot_interval = 0.05  # s between ParaView snapshots; 0 = none
+profile = false        # profile.csv at the end: x,y(,z),rho,p,u,v(,w),e of the particles within
+                       # profile_band spacings of the line x[profile_axis] = profile_at, by x
+profile_axis = "y"     # x | y | z
+profile_at = 0.0       # m
+profile_band = 2.0     # spacings
 
 [probes]
 surge_front = false    # distance from domain.min along x to the leading particle on the floor
@@ -90,6 +104,10 @@ diagnostics_plots = []  # diagnostics.csv columns plotted against time for every
 
 # [[fluid_blocks]]: at least one; each a body of fluid:
 #   min = {zero}, max = {one} (m), velocity = {zero} (m/s, at the centre), hydrostatic = true,
+#   density = 0.0 (kg/m^3; 0 = fluid.density; a given density is uniform, not hydrostatic),
+#   internal_energy = 0.0 (J/kg, the specific internal energy e of an ideal gas; required > 0
+#   with eos.kind = "ideal_gas"), spacing = 0.0 (m: the block's own lattice spacing, its
+#   smoothing length h_over_dx times it; 0 = particles.spacing),
 #   velocity_gradient = D x D zeros, row-major (1/s): v = velocity + G (x - centre),
 #   shape = "box" (or "ellipsoid": the ellipse or ellipsoid inscribed in min, max),
 #   layout = "lattice" (particles at the cell centres of spacing dx inside the shape, mass
@@ -117,6 +135,11 @@ diagnostics_plots = []  # diagnostics.csv columns plotted against time for every
 #   statistic = "pointwise" (every reference point), "mean" (the mean over the window) or
 #   "slope" (the least-squares slope over the window: a speed from a position),
 #   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point)
+# [[validation.profiles]]: a field of profile.csv compared at the end time with an exact
+#   solution: field = "rho" (or "p", "u"), reference = "theory:riemann" (the exact Riemann
+#   solution of an ideal gas between the first two fluid blocks, the diaphragm at the first
+#   block's x max), tolerance = 0.1, quick_tolerance = 0.1 (the relative L1 error
+#   sum |f - f_exact| / sum |f_exact| allowed), gated = true
 )toml",
                      fmt::arg("gravity", gravity), fmt::arg("zero", zero), fmt::arg("one", one),
                      fmt::arg("z_walls", z_walls));
@@ -132,11 +155,13 @@ const std::string& case_defaults_toml(int dimension) {
 const std::string& fluid_block_defaults(int dimension) {
   static const std::string d2 =
       "min = [0.0, 0.0]\nmax = [1.0, 1.0]\nvelocity = [0.0, 0.0]\nhydrostatic = true\n"
+      "density = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0]\nshape = \"box\"\nlayout = \"lattice\"\n"
       "count = 0\nseed = 1\nmin_distance = 0.0\n";
   static const std::string d3 =
       "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
-      "hydrostatic = true\nvelocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
+      "hydrostatic = true\ndensity = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
+      "velocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
       "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n";
   return dimension == 3 ? d3 : d2;
 }
@@ -146,6 +171,12 @@ const std::string& moving_wall_defaults() {
   return d;
 }
 
+const std::string& profile_defaults() {
+  static const std::string d =
+      "field = \"rho\"\nreference = \"theory:riemann\"\ntolerance = 0.1\n"
+      "quick_tolerance = 0.1\ngated = true\n";
+  return d;
+}
 const std::string& curve_defaults() {
   static const std::string d =
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"

@@ -18,6 +18,9 @@ struct FluidBlock {
   // (-A x, A y) of BL 5.2)
   std::vector<double> velocity_gradient;
   bool hydrostatic = true;         // initial density in hydrostatic equilibrium under gravity
+  double density = 0.0;            // kg/m^3, uniform; 0 = the fluid's (hydrostatic or rho0)
+  double internal_energy = 0.0;    // J/kg, an ideal gas's e
+  double spacing = 0.0;            // m, the block's own lattice spacing; 0 = particles.spacing
   std::string shape = "box";       // "box" or "ellipsoid" (inscribed in min, max)
   std::string layout = "lattice";  // "lattice" (spacing dx) or "random" (count, seed)
   long count = 0;                  // particles of a random layout
@@ -56,6 +59,16 @@ struct CurveCheck {
   double window_to = 0.0;  // 0 = to the reference's last point
 };
 
+// A profile field compared with a reference solution at the end time (validate): the relative
+// L1 error sum |f - f_exact| / sum |f_exact| over the particles of profile.csv.
+struct ProfileCheck {
+  std::string field;               // "rho", "p" or "u"
+  std::string theory = "riemann";  // the exact Riemann solution of the first two blocks
+  double tolerance = 0.1;
+  double quick_tolerance = 0.1;
+  bool gated = true;
+};
+
 struct CaseSpec {
   std::filesystem::path file;  // the case file read
   std::string resolved_toml;   // the fully resolved case file (every default written out)
@@ -73,15 +86,18 @@ struct CaseSpec {
   // [scheme]
   std::string preset;
   std::string kernel;
-  std::string density;     // resolved row
-  std::string force;       // resolved row
-  std::string correction;  // resolved row
+  std::string density;                     // resolved row
+  std::string force;                       // resolved row
+  std::string correction;                  // resolved row
+  std::string smoothing_length = "fixed";  // or "evolving", W (2.22)
+  std::string integrator = "leapfrog";     // or "runge_kutta", "modified_runge_kutta"
   double h_over_dx = 1.3;
   double cfl = 0.3;
   double alpha = 0.0;
   double beta = 0.0;
 
   // [fluid] and [eos]
+  std::string eos = "tait";     // or "ideal_gas"
   double rho0 = 1000.0;         // kg/m^3
   double mu = 0.0;              // Pa s
   std::vector<double> gravity;  // m/s^2
@@ -99,6 +115,10 @@ struct CaseSpec {
   double output_interval = 0.01;    // s, diagnostics and probes
   double snapshot_interval = 0.05;  // s; 0 = no snapshots
   int shepard_every = 0;            // steps between Shepard density filters, W (6.3); 0 = off
+  bool profile = false;             // profile.csv at the end time
+  int profile_axis = 1;             // the particles near the line x[axis] = profile_at
+  double profile_at = 0.0;          // m
+  double profile_band = 2.0;        // spacings
 
   // [probes]
   bool surge_front = false;
@@ -118,6 +138,7 @@ struct CaseSpec {
   std::string picture_field;          // the snapshot field that colours them
   std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run
   std::vector<CurveCheck> curves;
+  std::vector<ProfileCheck> profiles;
 };
 
 }  // namespace flume

@@ -21,7 +21,10 @@ enum OptionalField : unsigned {
   kFieldDrho = 1u << 2,     // drho
   kFieldShepard = 1u << 3,  // shepard, gamma
   kFieldL = 1u << 4,        // L, bl41_deviation
-  kFieldsAll = (1u << 5) - 1,
+  kFieldEnergy = 1u << 5,   // e (state), de
+  kFieldSmoothingRate = 1u << 6,  // dh
+  kFieldStepStart = 1u << 7,      // x_start, v_start, rho_start, h_start (+ e_start with e)
+  kFieldsAll = (1u << 8) - 1,
 };
 
 template <int D>
@@ -36,13 +39,21 @@ struct ParticleSet {
   std::vector<double> m;         // mass, kg
   std::vector<double> rho;       // density, kg/m^3
   std::vector<double> h;         // smoothing length, m
-  std::vector<V> v_half;         // leap-frog staggered velocity v^{n+1/2} (v^0 at start), m/s
+  // The velocity that carries the momentum the integrator keeps: leap-frog's staggered
+  // v^{n+1/2} (v^0 at start); v^{n+1} for the Runge-Kutta steps. m/s
+  std::vector<V> v_half;
+  std::vector<double> e;  // specific internal energy, J/kg (gas schemes)           (optional)
+  // The state at the start of a Runge-Kutta step, Phi^n of W (3.85)-(3.87), (3.92) (optional)
+  std::vector<V> x_start, v_start;
+  std::vector<double> rho_start, h_start, e_start;
 
   // --- derived in each step's sweeps ---
   std::vector<double> p;     // pressure (compression positive), Pa
   std::vector<double> c;     // local sound speed sqrt(dp/drho), m/s
   std::vector<V> a;          // acceleration, m/s^2
   std::vector<double> drho;  // density rate, kg/(m^3 s)                              (optional)
+  std::vector<double> de;    // internal energy rate, W/kg                           (optional)
+  std::vector<double> dh;    // smoothing length rate W (2.22), m/s                  (optional)
   std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k/d x_l, 1/s (opt.)
   std::vector<M> stress;     // deviatoric stress sigma' = 2 mu d', BL (23)-(24), Pa    (optional)
 
@@ -58,8 +69,8 @@ struct ParticleSet {
   std::size_t size() const { return x.size(); }
   bool uses(unsigned field) const { return (optional & field) != 0; }
 
-  // Applies f to every state array: re-ordering must never forget one. Add a new field above
-  // and here, nowhere else.
+  // Applies f to every state array in use: re-ordering must never forget one. Add a new field
+  // above and here, nowhere else.
   template <class F>
   void for_each_state_field(F&& f) {
     f(id);
@@ -69,6 +80,7 @@ struct ParticleSet {
     f(rho);
     f(h);
     f(v_half);
+    for_each_optional_state_field(optional, f);
   }
   // Applies f to every derived array in use.
   template <class F>
@@ -76,14 +88,33 @@ struct ParticleSet {
     f(p);
     f(c);
     f(a);
-    if (uses(kFieldDrho)) f(drho);
-    if (uses(kFieldGradV)) f(grad_v);
-    if (uses(kFieldStress)) f(stress);
-    if (uses(kFieldShepard)) {
+    for_each_optional_derived_field(optional, f);
+  }
+  // The optional state arrays of the fields in `bits`.
+  template <class F>
+  void for_each_optional_state_field(unsigned bits, F&& f) {
+    if (bits & kFieldEnergy) f(e);
+    if (bits & kFieldStepStart) {
+      f(x_start);
+      f(v_start);
+      f(rho_start);
+      f(h_start);
+      if (bits & kFieldEnergy) f(e_start);
+    }
+  }
+  // The optional derived arrays of the fields in `bits`.
+  template <class F>
+  void for_each_optional_derived_field(unsigned bits, F&& f) {
+    if (bits & kFieldDrho) f(drho);
+    if (bits & kFieldEnergy) f(de);
+    if (bits & kFieldSmoothingRate) f(dh);
+    if (bits & kFieldGradV) f(grad_v);
+    if (bits & kFieldStress) f(stress);
+    if (bits & kFieldShepard) {
       f(shepard);
       f(gamma);
     }
-    if (uses(kFieldL)) {
+    if (bits & kFieldL) {
       f(L);
       f(bl41_deviation);
     }
@@ -109,14 +140,19 @@ struct ParticleSet {
     for_each_field([room](auto& field) { field.reserve(room); });
   }
 
-  // Keeps only the optional fields in `fields` allocated (and frees the others).
+  // Keeps only the optional fields in `fields` allocated (and frees the others). The values of
+  // the fields kept stay (a gas's internal energy, set with the particles); derived fields are
+  // recomputed before they are read.
   void use_only(unsigned fields) {
     const std::size_t n = size();
-    optional = kFieldsAll;
-    for_each_derived_field([](auto& field) {
+    const auto release = [](auto& field) {
       field.clear();
       field.shrink_to_fit();
-    });
+    };
+    // The arrays of the fields dropped (e_start goes with either of its two bits).
+    for_each_optional_state_field(kFieldsAll & ~fields, release);
+    if ((fields & kFieldEnergy) == 0 || (fields & kFieldStepStart) == 0) release(e_start);
+    for_each_optional_derived_field(kFieldsAll & ~fields, release);
     optional = fields;
     resize(n);
   }

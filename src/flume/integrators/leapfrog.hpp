@@ -5,6 +5,7 @@
 // BL does not say how the density is advanced. flume keeps rho with x at integer levels and
 // advances it with the velocity of the kick,
 //   rho^{n+1} = rho^n + dt^{n+1} (d rho/dt)(x^n, v^{n+1/2}),
+// and likewise a gas's internal energy e and an evolving smoothing length (W (2.22)),
 // the symplectic-Euler pairing of the acoustic (rho, v) system: stable for dt below the CFL
 // limit. (Advancing rho alongside v from rates at the integer time, with v and rho predicted
 // there, is the forward-Euler pairing and lets still water drift into a growing acoustic mode.)
@@ -14,6 +15,7 @@
 #pragma once
 
 #include "flume/core/particle_set.hpp"
+#include "flume/integrators/runge_kutta.hpp"
 #include "flume/schemes/particle_passes.hpp"
 
 namespace flume {
@@ -55,20 +57,25 @@ class LeapFrog {
       return after(b, e);
     });
   }
-  // rho^{n+1} = rho^n + dt drho (drho evaluated after the kick), then the drift BL (62):
-  // x^{n+1} = x^n + dt v^{n+1/2}, and the prediction v^{n+1} = v^{n+1/2} + (dt/2) a^n used by
-  // the velocity-dependent terms of the next step and by the kinetic energy; then after(b, e),
-  // as kick_and_drift.
+  // rho^{n+1} = rho^n + dt drho (drho evaluated after the kick; e and h likewise when they
+  // evolve), then the drift BL (62): x^{n+1} = x^n + dt v^{n+1/2}, and the prediction
+  // v^{n+1} = v^{n+1/2} + (dt/2) a^n used by the velocity-dependent terms of the next step and
+  // by the kinetic energy; then after(b, e), as kick_and_drift.
   template <class After>
-  long advance_density_and_drift(ParticleSet<D>& ps, double dt, long none,
-                                 const After& after) const {
+  long advance_state_and_drift(ParticleSet<D>& ps, double dt, EvolvedFields evolved, long none,
+                               const After& after) const {
     return least_over_blocks(ps.n_real, none, [&](std::size_t b, std::size_t e) {
-      double* __restrict rho = ps.rho.data();
-      const double* __restrict drho = ps.drho.data();
       const double step = dt;
+      const auto advance = [&](std::vector<double>& field, const std::vector<double>& rate) {
+        double* __restrict f = field.data();
+        const double* __restrict df = rate.data();
 #pragma omp simd
-      for (std::size_t i = b; i < e; ++i)
-        rho[i] += step * drho[i];
+        for (std::size_t i = b; i < e; ++i)
+          f[i] += step * df[i];
+      };
+      if (evolved.density) advance(ps.rho, ps.drho);
+      if (evolved.energy) advance(ps.e, ps.de);
+      if (evolved.smoothing_length) advance(ps.h, ps.dh);
       double* __restrict x = components(ps.x);  // component by component, as kick_and_drift
       double* __restrict v = components(ps.v);
       const double* __restrict v_half = components(ps.v_half);
@@ -90,7 +97,7 @@ class LeapFrog {
       return;
     }
     kick(ps, dt);
-    advance_density_and_drift(ps, dt, 0, nothing);
+    advance_state_and_drift(ps, dt, EvolvedFields{true, false, false}, 0, nothing);
   }
 
  private:

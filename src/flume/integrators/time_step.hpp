@@ -1,5 +1,6 @@
 // The time step. BL (63): dt = C_FL h_min / max_a (c + |v_a|), with c the reference sound speed
-// (errata.md, BL (63)). BL's examples are viscous and BL gives no Courant number, so flume adds
+// (errata.md, BL (63)); for a gas, whose reference speed is zero, each particle's own c_a
+// (W (3.88)'s c_i). BL's examples are viscous and BL gives no Courant number, so flume adds
 // the usual explicit-diffusion limit dt <= 0.125 h^2 / nu (Morris et al. 1997) when mu > 0 and
 // the body-force limit dt <= 0.25 sqrt(h / |a|) (W (3.89)); C_FL comes from the case file.
 // Each particle a has its own limit dt_a, the smallest of the three with its own h_a, v_a and
@@ -20,7 +21,7 @@ namespace flume {
 template <int D>
 struct StepLimit {
   double cfl = 0.3;  // C_FL
-  double c0 = 0.0;   // reference sound speed, m/s
+  double c0 = 0.0;   // reference sound speed, m/s; 0: each particle's own c (a gas, W (3.88))
   double rho0 = 0.0;
   double mu = 0.0;  // dynamic viscosity, Pa s
 
@@ -33,6 +34,8 @@ struct StepLimit {
   // where mu = 0.
   double least(const ParticleSet<D>& ps, std::size_t b, std::size_t e) const {
     const double* __restrict h = ps.h.data();
+    const double* __restrict sound = ps.c.data();
+    const bool local = c0 == 0.0;
     const Vec<D>* __restrict v = ps.v.data();
     const Vec<D>* __restrict acc = ps.a.data();
     const double courant = cfl, c = c0;
@@ -40,7 +43,7 @@ struct StepLimit {
     const auto n = static_cast<long>(e);
 #pragma omp simd reduction(min : dt)
     for (auto a = static_cast<long>(b); a < n; ++a) {
-      const double acoustic = courant * (h[a] / (c + norm(v[a])));
+      const double acoustic = courant * (h[a] / ((local ? sound[a] : c) + norm(v[a])));
       const double body = 0.25 * std::sqrt(h[a] / norm(acc[a]));
       const double viscous = 0.125 * h[a] * h[a] * rho0 / mu;
       dt = std::min(dt, std::min(std::min(acoustic, body), viscous));

@@ -18,6 +18,7 @@
 #include "flume/probes/fluid_body.hpp"
 #include "flume/probes/semi_axes.hpp"
 #include "flume/probes/surge_front.hpp"
+#include "flume/run/profile.hpp"
 #include "flume/run/run_output.hpp"
 #include "flume/sim/diagnostics.hpp"
 
@@ -45,6 +46,9 @@ io::PointCloud snapshot_cloud(const ParticleSet<D>& ps) {
     cloud.ids.push_back(ps.id[i]);
   }
   cloud.fields = {std::move(vel), std::move(rho), std::move(p), std::move(m)};
+  if (ps.uses(kFieldEnergy))
+    cloud.fields.push_back(
+        {"internal_energy", 1, std::vector<double>(ps.e.begin(), ps.e.begin() + n)});
   if (ps.uses(kFieldL))  // how far BL (41) is from holding before the correction matrix
     cloud.fields.push_back(
         {"bl41_deviation", 1,
@@ -202,6 +206,9 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt) {
         progress.update(sim->time(), sim->steps(), wall());
       }
       result.completed = true;
+      if (spec.profile)
+        write_profile(opt.out_dir / "profile.csv", sim->particles(), spec.profile_axis,
+                      spec.profile_at, spec.profile_band * spec.spacing);
     } catch (const SimulationError& e) {
       result.error = e.what();
       // The state that failed, as the series' last snapshot: where it blew up is the first

@@ -31,10 +31,10 @@ class ContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
     return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }
 
-  void compute_density_rate(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                            const Halo<D>& halo) const override {
-    halo.update_velocity(ps, ps.v_half);
-    ContinuityDensityBL4<D> continuity{ps, ps.v_half};
+  void compute_state_rates(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                           std::vector<Vec<D>>& u) const override {
+    halo.update_velocity(ps, u);
+    ContinuityDensityBL4<D> continuity{ps, u};
     sweep<D, Kernel>(ctx, ps, "continuity", continuity);
   }
 

@@ -55,10 +55,10 @@ class CorrectedContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
     }
   }
 
-  void compute_density_rate(ParticleSet<D>& ps, const SweepContext<D>& ctx,
-                            const Halo<D>& halo) const override {
-    halo.update_velocity(ps, ps.v_half);
-    CorrectedContinuity<D, C> continuity{ps, ps.v_half};
+  void compute_state_rates(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                           std::vector<Vec<D>>& u) const override {
+    halo.update_velocity(ps, u);
+    CorrectedContinuity<D, C> continuity{ps, u};
     sweep<D, Kernel>(ctx, ps, "continuity", continuity);
   }
 

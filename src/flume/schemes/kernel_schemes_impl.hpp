@@ -6,7 +6,9 @@
 #include "flume/schemes/continuity_scheme.hpp"
 #include "flume/schemes/corrected_continuity_scheme.hpp"
 #include "flume/schemes/kernel_schemes.hpp"
+#include "flume/schemes/sph_euler_scheme.hpp"
 #include "flume/schemes/summation_scheme.hpp"
+#include "flume/schemes/weak_sph_scheme.hpp"
 
 namespace flume {
 
@@ -40,6 +42,14 @@ std::unique_ptr<Scheme<D>> make_kernel_scheme(const SchemeRows& rows, const Phys
   if (rows.density == "continuity" && (rows.force == "bl59" || rows.force == "bl20") &&
       c == "mixed")
     return std::make_unique<CorrectedContinuityScheme<D, K, Correction::mixed>>(phys);
+  // The thesis's schemes (W 3.2, 3.3, 4.1).
+  const bool evolving_h = rows.smoothing_length == "evolving";
+  if (rows.density == "w350" && rows.force == "w351" && c == "none")
+    return std::make_unique<SphEulerScheme<D, K>>(phys, evolving_h);
+  if (rows.density == "w379" && rows.force == "w380" && c == "none")
+    return std::make_unique<WeakSphScheme<D, K, PlainGradient>>(phys, evolving_h);
+  if (rows.density == "w379" && rows.force == "w380" && c == "renormalized")
+    return std::make_unique<WeakSphScheme<D, K, RenormalizedGradient>>(phys, evolving_h);
   return nullptr;
 }
 

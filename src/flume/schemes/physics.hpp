@@ -3,13 +3,13 @@
 #pragma once
 
 #include "flume/core/vec.hpp"
-#include "flume/equations/eos_tait.hpp"
+#include "flume/equations/eos.hpp"
 
 namespace flume {
 
 template <int D>
 struct Physics {
-  TaitEos eos;
+  Eos eos;
   double mu = 0.0;        // dynamic viscosity, Pa s (BL (22)-(25))
   Vec<D> gravity;         // body force per unit mass, m/s^2
   double av_alpha = 0.0;  // artificial viscosity W (3.18), -

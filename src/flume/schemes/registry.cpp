@@ -16,6 +16,9 @@ const std::map<std::string, SchemeRows>& presets() {
       {"continuity", {"continuity", "bl20", "none"}},
       {"inconsistent", {"summation", "bl20", "none"}},
       {"csph", {"continuity", "bl59", "mixed"}},
+      {"sph-euler", {"w350", "w351", "none"}},
+      {"wsph", {"w379", "w380", "none"}},
+      {"rsph", {"w379", "w380", "renormalized"}},
   };
   return table;
 }
@@ -42,7 +45,8 @@ const std::vector<std::string>& scheme_combinations() {
       "summation+bl7+none",    "summation+bl7+shepard",    "summation+bl7+first_order",
       "summation+bl20+none",   "summation+bl20+shepard",   "summation+bl20+first_order",
       "continuity+bl20+none",  "continuity+bl20+gradient", "continuity+bl20+shepard",
-      "continuity+bl20+mixed", "continuity+bl59+mixed"};
+      "continuity+bl20+mixed", "continuity+bl59+mixed",    "w350+w351+none",
+      "w379+w380+none",        "w379+w380+renormalized"};
   return combos;
 }
 

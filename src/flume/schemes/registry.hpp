@@ -13,13 +13,18 @@
 namespace flume {
 
 struct SchemeRows {
-  std::string density;  // "summation" (BL (1)) or "continuity" (BL (4))
-  std::string force;    // "bl7" (BL (7)), "bl20" (BL (20) = BL (8) with +), "bl59" (CSPH)
+  // "summation" (BL (1)), "continuity" (BL (4)), "w350" (W (3.50)), "w379" (W (3.79) corrected)
+  std::string density;
+  // "bl7" (BL (7)), "bl20" (BL (20) = BL (8) with +), "bl59" (CSPH), "w351" (W (3.51) with the
+  // energy equation W (3.52)), "w380" (W (3.80) with W (3.81))
+  std::string force;
   // BL section 4: "none"; for a summation density the kernel corrections of the density,
   // "shepard" (BL (53)) or "first_order" (BL (47)-(52)); for a continuity density the corrected
   // gradient of correction.hpp, "gradient" (BL (42)-(45)), "shepard" (BL (53), (57)) or
-  // "mixed" (CSPH, BL (54)-(58)).
+  // "mixed" (CSPH, BL (54)-(58)); for W's weak scheme "renormalized" (R-SPH, W (4.8)-(4.16)).
   std::string correction = "none";
+  // W (2.22): "fixed" or "evolving" (the evolved-density schemes of W: sph-euler, wsph, rsph).
+  std::string smoothing_length = "fixed";
 };
 
 // The rows of a named preset, or nullopt for an unknown name.

@@ -22,6 +22,10 @@ class Scheme {
   virtual double support() const = 0;
   // True when rho is integrated in time (continuity); false when it is recomputed (summation).
   virtual bool evolves_density() const = 0;
+  // True when the specific internal energy e is integrated in time (a gas, W (3.52), (3.81)).
+  virtual bool evolves_energy() const { return false; }
+  // True when the smoothing length evolves with the density, W (2.22).
+  virtual bool evolves_smoothing_length() const { return false; }
   // The optional particle fields (OptionalField bits) the scheme reads or writes.
   virtual unsigned fields() const = 0;
   // Fills ps.a of the real particles (and ps.rho, for a summation density) and returns the
@@ -30,10 +34,11 @@ class Scheme {
   // ghosts between groups.
   virtual double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                                        const Halo<D>& halo, const StepLimit<D>& limit) const = 0;
-  // For schemes that evolve density: fills ps.drho from the positions x^n and the velocities
-  // v^{n+1/2} after the leap-frog kick (leapfrog.hpp says why). Ghost v_half is refreshed here.
-  virtual void compute_density_rate(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
-                                    const Halo<D>& /*halo*/) const {}
+  // For schemes that evolve density (energy, smoothing length): fills ps.drho (ps.de, ps.dh)
+  // from the positions x and the velocity field u: leap-frog's v^{n+1/2} after the kick
+  // (leapfrog.hpp says why), a Runge-Kutta stage's v. The ghosts' u is refreshed here.
+  virtual void compute_state_rates(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
+                                   const Halo<D>& /*halo*/, std::vector<Vec<D>>& /*u*/) const {}
   // For schemes that evolve density: the Shepard density filter W (6.3) over the real
   // particles, ghosts appended and refreshed. (A summation density is recomputed every step,
   // so the case reader does not allow the filter with it.)

@@ -32,9 +32,16 @@ class SummationScheme final : public Scheme<D> {
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
     Density<D> density{ps};
-    // The equation of state in the same pass as the density's finish (sweep_then).
+    // The equation of state in the same pass as the density's finish (sweep_then). A liquid's:
+    // the summation schemes have no energy equation (the case reader pairs a gas with W's).
+    const TaitEos tait = phys_.eos.tait();
     sweep_then<D, Kernel>(
-        ctx, ps, "density", [&](std::size_t i) { pressure_at(ps, phys_, i); }, density);
+        ctx, ps, "density",
+        [&](std::size_t i) {
+          ps.p[i] = tait.pressure(ps.rho[i]);
+          ps.c[i] = tait.sound_speed(ps.rho[i], ps.p[i]);
+        },
+        density);
     halo.update_scalar(ps, ps.rho);
     halo.update_scalar(ps, ps.p);
     halo.update_scalar(ps, ps.c);

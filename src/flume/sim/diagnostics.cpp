@@ -41,7 +41,7 @@ std::vector<double> diagnostics_row(const ParticleSet<D>& ps, const Physics<D>& 
     }
     ke += 0.5 * m * norm2(ps.v[i]);
     pe -= m * dot(phys.gravity, ps.x[i]);
-    ie += m * phys.eos.specific_internal_energy(ps.rho[i]);
+    ie += m * phys.eos.specific_internal_energy(ps.rho[i], ps.uses(kFieldEnergy) ? ps.e[i] : 0.0);
     rho_min = std::min(rho_min, ps.rho[i]);
     rho_max = std::max(rho_max, ps.rho[i]);
   }

@@ -38,11 +38,12 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       config_(config),
       limit_(phys_, config_.cfl) {
   ps_.drop_ghosts();
-  ps_.use_only(scheme_->fields());
+  ps_.use_only(scheme_->fields() |
+               (config_.integrator == Integrator::leap_frog ? 0u : RungeKutta<D>::fields()));
   // The pressure of the starting density, so that the state written before the first step
   // (snapshot 0) shows it; every step recomputes it.
   for (std::size_t i = 0; i < ps_.n_real; ++i)
-    ps_.p[i] = phys_.eos.pressure(ps_.rho[i]);
+    ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
   walls_.set_time(time_);
   check_state();
 }
@@ -67,25 +68,21 @@ void Simulation<D>::prepare_neighbours(double range) {
 }
 
 template <int D>
-void Simulation<D>::step(double max_dt) {
+double Simulation<D>::neighbours_at(double t) {
   double h_max = 0.0, h_min = ps_.n_real ? ps_.h[0] : 0.0;
   for (std::size_t i = 0; i < ps_.n_real; ++i) {
     h_max = std::max(h_max, ps_.h[i]);
     h_min = std::min(h_min, ps_.h[i]);
   }
   const double range = scheme_->support() * h_max;
-  walls_.set_time(time_);  // moving walls stand where they are at t^n while the rates are taken
+  walls_.set_time(t);  // moving walls stand where they are at t while the rates are taken
   prepare_neighbours(range);
-  const SweepContext<D> ctx{grid_, work_, h_min == h_max ? h_max : 0.0, &clock_};
+  uniform_h_ = h_min == h_max ? h_max : 0.0;
+  return range;
+}
 
-  if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
-    scheme_->filter_density(ps_, ctx, halo_);
-
-  // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
-  const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
-
-  std::optional<PhaseClock::Scope> phase;
-  phase.emplace(&clock_, "integration");
+template <int D>
+double Simulation<D>::choose_step(double dt_stable, double max_dt) {
   const double dt_rule = config_.fixed_dt > 0.0 ? config_.fixed_dt : dt_stable;
   if (steps_ == 0) first_dt_ = dt_rule;
   // A CFL step that shrinks by four orders of magnitude means particles are flying apart or
@@ -95,7 +92,38 @@ void Simulation<D>::step(double max_dt) {
         fmt::format("time step collapsed to {:.3g} s (first step {:.3g} s) at "
                     "t = {:.6g} s, step {}: the simulation blew up",
                     dt_rule, first_dt_, time_, steps_));
-  const double dt = std::min(dt_rule, max_dt);
+  return std::min(dt_rule, max_dt);
+}
+
+template <int D>
+void Simulation<D>::step(double max_dt) {
+  switch (config_.integrator) {
+    case Integrator::leap_frog:
+      step_leap_frog(max_dt);
+      return;
+    case Integrator::runge_kutta:
+      step_runge_kutta(max_dt, RungeKuttaKind::midpoint);
+      return;
+    case Integrator::modified_runge_kutta:
+      step_runge_kutta(max_dt, RungeKuttaKind::modified);
+      return;
+  }
+}
+
+template <int D>
+void Simulation<D>::step_leap_frog(double max_dt) {
+  const double range = neighbours_at(time_);
+  const SweepContext<D> ctx{grid_, work_, uniform_h_, &clock_};
+
+  if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
+    scheme_->filter_density(ps_, ctx, halo_);
+
+  // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
+  const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
+
+  std::optional<PhaseClock::Scope> phase;
+  phase.emplace(&clock_, "integration");
+  const double dt = choose_step(dt_stable, max_dt);
   // The drift moves the particles to t^{n+1}; in the same pass each is put back across the
   // walls (standing where they are at t^{n+1}) and checked: the first bad one is reported.
   walls_.set_time(time_ + dt);
@@ -105,20 +133,69 @@ void Simulation<D>::step(double max_dt) {
     return first_unsound(b, e);
   };
   long bad = none;
-  if (scheme_->evolves_density()) {
+  const EvolvedFields state = evolved();
+  if (state.density || state.energy || state.smoothing_length) {
     integrator_.kick(ps_, dt);
     phase.reset();
-    scheme_->compute_density_rate(ps_, ctx, halo_);
+    scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v_half);
     phase.emplace(&clock_, "integration");
-    bad = integrator_.advance_density_and_drift(ps_, dt, none, put_back_and_check);
+    bad = integrator_.advance_state_and_drift(ps_, dt, state, none, put_back_and_check);
   } else {
     bad = integrator_.kick_and_drift(ps_, dt, none, put_back_and_check);
   }
+  finish_step(dt, bad);
+}
+
+// W (3.85)-(3.87) or W (3.92) (runge_kutta.hpp): the rates at Phi^n, a stage, the rates at
+// the stage state, the end. The Shepard filter, when due, acts on Phi^n before its rates.
+template <int D>
+void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
+  const RungeKutta<D> rk(kind, evolved());
+  const long none = static_cast<long>(ps_.n_real);
+  double range = neighbours_at(time_);
+  const auto rates = [&](double* stable) {
+    const SweepContext<D> ctx{grid_, work_, uniform_h_, &clock_};
+    if (stable && config_.shepard_every > 0 && steps_ > 0 &&
+        steps_ % config_.shepard_every == 0)
+      scheme_->filter_density(ps_, ctx, halo_);
+    const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
+    scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v);
+    if (stable) *stable = dt_stable;
+  };
+  auto put_back_and_check = [&](std::size_t b, std::size_t e) {
+    walls_.put_back(ps_, b, e, range);
+    return first_unsound(b, e);
+  };
+
+  double dt_stable = 0.0;
+  rates(&dt_stable);
+  std::optional<PhaseClock::Scope> phase;
+  phase.emplace(&clock_, "integration");
+  const double dt = choose_step(dt_stable, max_dt);
+  // The stage state stands at t + dt/2 (W (3.85); W (3.92)'s Phi^{n+1/2}).
+  walls_.set_time(time_ + 0.5 * dt);
+  long bad = rk.to_stage(ps_, dt, none, put_back_and_check);
+  ps_.drop_ghosts();
+  if (bad < none) {
+    finish_step(0.5 * dt, bad);  // reports the particle, at the stage's time
+    return;
+  }
+  phase.reset();
+  range = neighbours_at(time_ + 0.5 * dt);
+  rates(nullptr);
+  phase.emplace(&clock_, "integration");
+  walls_.set_time(time_ + dt);
+  bad = rk.to_end(ps_, dt, none, put_back_and_check);
+  finish_step(dt, bad);
+}
+
+template <int D>
+void Simulation<D>::finish_step(double dt, long bad) {
   ps_.drop_ghosts();
   time_ += dt;
   last_dt_ = dt;
   ++steps_;
-  if (bad < none) report(static_cast<std::size_t>(bad));
+  if (bad < static_cast<long>(ps_.n_real)) report(static_cast<std::size_t>(bad));
 }
 
 template <int D>
@@ -142,7 +219,7 @@ void Simulation<D>::check_state() const {
 
 template <int D>
 void Simulation<D>::report(std::size_t i) const {
-  bool finite = std::isfinite(ps_.rho[i]);
+  bool finite = std::isfinite(ps_.rho[i]) && (!ps_.uses(kFieldEnergy) || std::isfinite(ps_.e[i]));
   for (int k = 0; k < D; ++k)
     finite = finite && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
   if (!finite)

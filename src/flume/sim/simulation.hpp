@@ -1,7 +1,8 @@
 // One running simulation: particles, scheme, walls, integrator and neighbour search, advanced
 // step by step. No I/O here: the runner decides what to write and when.
 // Each step: sort by cell -> ghosts -> scheme's groups (with the CFL step) -> leap-frog, with
-// the walls' put-back and the checks in the drift's pass.
+// the walls' put-back and the checks in the drift's pass; or, for the Runge-Kutta steps of
+// W 3.4, that twice (the rates at the start and at the stage state).
 #pragma once
 
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "flume/boundaries/box_walls.hpp"
 #include "flume/integrators/leapfrog.hpp"
+#include "flume/integrators/runge_kutta.hpp"
 #include "flume/neighbors/cell_grid.hpp"
 #include "flume/schemes/scheme.hpp"
 #include "flume/schemes/sweep_workspace.hpp"
@@ -16,8 +18,12 @@
 
 namespace flume {
 
+// The time integration: leap-frog BL (61)-(62), or the Runge-Kutta steps of W 3.4.
+enum class Integrator { leap_frog, runge_kutta, modified_runge_kutta };
+
 template <int D>
 struct SimulationConfig {
+  Integrator integrator = Integrator::leap_frog;
   double cfl = 0.3;       // Courant number of BL (63)
   double fixed_dt = 0.0;  // s; 0 means the CFL rule
   int shepard_every = 0;  // steps between Shepard density filters W (6.3); 0 = never
@@ -48,15 +54,32 @@ class Simulation {
  private:
   // Sorts the real particles by cell and builds the ghosts, binned into the same grid.
   void prepare_neighbours(double range);
+  // The walls at time t, then prepare_neighbours for the current smoothing lengths; returns
+  // the neighbour range (the kernel's support times the largest h) and sets uniform_h_.
+  double neighbours_at(double t);
+  // The step to take: the rule's (fixed, or the stable step of the rates) capped by max_dt.
+  // Throws when the stable step has collapsed (a blow-up).
+  double choose_step(double dt_stable, double max_dt);
+  void step_leap_frog(double max_dt);
+  void step_runge_kutta(double max_dt, RungeKuttaKind kind);
+  // The end of every step: ghosts dropped, the clock moved on, the first unsound particle
+  // (if any, bad < n_real) reported.
+  void finish_step(double dt, long bad);
+  EvolvedFields evolved() const {
+    return {scheme_->evolves_density(), scheme_->evolves_energy(),
+            scheme_->evolves_smoothing_length()};
+  }
   // The first of the real particles [b, e) that is not sound (a non-finite state, a density
   // <= 0, outside the box), or n_real if none. Without branches on the particle: the loop
   // vectorises.
   long first_unsound(std::size_t b, std::size_t e) const {
     const long none = static_cast<long>(ps_.n_real);
     long first = none;
+    // A gas's internal energy must stay finite too (else the density is checked twice).
+    const double* energy = ps_.uses(kFieldEnergy) ? ps_.e.data() : ps_.rho.data();
 #pragma omp simd reduction(min : first)
     for (std::size_t i = b; i < e; ++i) {
-      bool ok = std::isfinite(ps_.rho[i]) & (ps_.rho[i] > 0.0);
+      bool ok = std::isfinite(ps_.rho[i]) & (ps_.rho[i] > 0.0) & std::isfinite(energy[i]);
       for (int k = 0; k < D; ++k)
         ok = ok & std::isfinite(ps_.x[i][k]) & std::isfinite(ps_.v[i][k]);
       ok = ok & walls_.inside(ps_, i);
@@ -83,6 +106,7 @@ class Simulation {
   double time_ = 0.0;
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;  // the step rule's first value, s
+  double uniform_h_ = 0.0;  // the common smoothing length of this step's particles, or 0
   long steps_ = 0;
   PhaseClock clock_;
 };

@@ -16,6 +16,7 @@ struct SeriesResult {
   std::string label;  // "main" configuration's preset, or the variant's override value
   RunResult run;
   std::vector<std::vector<CurvePoint>> curves;  // one per CaseSpec::curves entry
+  std::vector<double> profile_errors;           // one per CaseSpec::profiles entry (L1)
 };
 
 struct CaseResult {
@@ -28,6 +29,8 @@ struct CaseResult {
   // pictures[k][s]: PNG of series s near spec.pictures[k] ("" if it could not be drawn)
   std::vector<std::vector<std::string>> pictures;
   std::vector<std::string> diagnostics_plots;  // per spec.diagnostics_plots entry: PNG or ""
+  std::vector<double> profile_tolerances;      // per profile check (quick or full)
+  std::vector<std::string> profile_plots;      // per profile check: PNG or ""
 };
 
 // Max and mean of the errors of a curve.

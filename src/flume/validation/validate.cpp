@@ -13,6 +13,7 @@
 #include "flume/io/csv_table.hpp"
 #include "flume/validation/bundled_cases.hpp"
 #include "flume/validation/case_result.hpp"
+#include "flume/validation/profile_compare.hpp"
 #include "flume/validation/report.hpp"
 #include "flume/validation/theory_reference.hpp"
 
@@ -139,6 +140,46 @@ void plot_diagnostics(const std::filesystem::path& out_dir, CaseResult& cr) {
   }
 }
 
+// Each profile check's field along the profile line, every completed series against the
+// exact solution (scripts/plot_curve.py).
+void plot_profiles(const std::filesystem::path& out_dir, CaseResult& cr) {
+  const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_curve.py";
+  const ShockTube tube = shock_tube(cr.spec);
+  const auto exact = out_dir / fmt::format("{}_exact.csv", cr.spec.name);
+  write_exact_profile(tube, cr.spec.domain_min[0], cr.spec.domain_max[0], 801, exact);
+  const auto exact_data = io::read_csv(exact);
+  for (const auto& check : cr.spec.profiles) {
+    std::string args;
+    for (const auto& s : cr.series) {
+      if (!s.run.completed) continue;
+      const auto d = io::read_csv(out_dir / cr.spec.name / s.label / "profile.csv");
+      const auto file = out_dir / fmt::format("{}_{}_{}.csv", cr.spec.name, check.field, s.label);
+      io::CsvTable table(file, {"x", "y"});
+      const auto x = d.column("x"), y = d.column(check.field);
+      for (std::size_t k = 0; k < x.size(); ++k)
+        table.add_row(std::vector<double>{x[k], y[k]});
+      table.flush();
+      args += " --series " + shell_quote(s.label + "=" + file.string());
+    }
+    const auto ref = out_dir / fmt::format("{}_{}_exact.csv", cr.spec.name, check.field);
+    io::CsvTable table(ref, {"x", "y"});
+    const auto x = exact_data.column("x"), y = exact_data.column(check.field);
+    for (std::size_t k = 0; k < x.size(); ++k)
+      table.add_row(std::vector<double>{x[k], y[k]});
+    table.flush();
+    const std::string png = fmt::format("{}_profile_{}.png", cr.spec.name, check.field);
+    const std::string cmd = fmt::format(
+        "{} {}{} --reference {} --reference-label {} --out {} --title {} --xlabel {} --ylabel {} "
+        "> /dev/null 2>&1",
+        python(), shell_quote(script.string()), args, shell_quote(ref.string()),
+        shell_quote("exact Riemann solution"), shell_quote((out_dir / png).string()),
+        shell_quote(fmt::format("{}: {} at t = {} s", cr.spec.name, check.field, cr.spec.end_time)),
+        shell_quote("x (m)"), shell_quote(check.field));
+    cr.profile_plots.push_back(!args.empty() && std::system(cmd.c_str()) == 0 ? png
+                                                                              : std::string());
+  }
+}
+
 CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   CaseResult cr;
   const auto file = bundled_case(name);
@@ -151,6 +192,8 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     cr.tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
     cr.mean_tolerances.push_back(opt.quick ? check.quick_mean_tolerance : check.mean_tolerance);
   }
+  for (const auto& check : cr.spec.profiles)
+    cr.profile_tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
 
   std::vector<std::pair<std::string, std::vector<std::string>>> configs{{cr.spec.preset, base}};
   for (const auto& v : cr.spec.variants) {
@@ -167,8 +210,10 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     SeriesResult s;
     s.label = label;
     s.run = run_case(spec, RunOptions{run_dir, opt.threads, true});
-    probes.push_back(s.run.completed ? io::read_csv(run_dir / "probes.csv") : io::CsvData{});
-    if (s.run.completed) {
+    // A case without curves (a shock tube) has no probes.csv.
+    const bool curves = s.run.completed && !spec.curves.empty();
+    probes.push_back(curves ? io::read_csv(run_dir / "probes.csv") : io::CsvData{});
+    if (curves) {
       const auto t = probes.back().column("time");
       for (const auto& check : spec.curves) {
         const auto ref = curve_reference(spec, check);
@@ -179,10 +224,17 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
                                 check.absolute, check.statistic, check.window_from, to));
       }
     }
+    if (s.run.completed && !spec.profiles.empty()) {
+      const ShockTube tube = shock_tube(spec);
+      const auto profile = io::read_csv(run_dir / "profile.csv");
+      for (const auto& check : spec.profiles)
+        s.profile_errors.push_back(profile_l1_error(tube, profile, check.field));
+    }
     cr.series.push_back(std::move(s));
   }
   draw_pictures(opt.out_dir, cr);
   plot_diagnostics(opt.out_dir, cr);
+  if (!cr.spec.profiles.empty() && cr.series.front().run.completed) plot_profiles(opt.out_dir, cr);
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
     cr.plots.push_back(
         cr.series.front().run.completed
@@ -205,6 +257,22 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
     return false;
   }
   bool all_pass = true;
+  for (std::size_t c = 0; c < cr.spec.profiles.size(); ++c) {
+    const auto& check = cr.spec.profiles[c];
+    const double error = main.profile_errors.at(c);
+    const bool pass = error <= cr.profile_tolerances[c];
+    if (check.gated) all_pass = all_pass && pass;
+    rows.push_back({{"case", cr.spec.name},
+                    {"metric", fmt::format("{} relative L1 error at t = {} s against the exact "
+                                           "Riemann solution",
+                                           check.field, cr.spec.end_time)},
+                    {"value", error},
+                    {"reference", nullptr},
+                    {"error", error},
+                    {"tolerance", cr.profile_tolerances[c]},
+                    {"gated", check.gated},
+                    {"pass", pass}});
+  }
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c) {
     const auto& check = cr.spec.curves[c];
     if (main.curves[c].empty() && check.gated) all_pass = false;
@@ -249,7 +317,7 @@ int validate(const ValidateOptions& opt) {
   if (names.empty()) {
     for (const auto& f : bundled_case_files()) {
       const auto spec = read_case(f, {});
-      if (!spec.curves.empty()) names.push_back(spec.name);
+      if (!spec.curves.empty() || !spec.profiles.empty()) names.push_back(spec.name);
     }
   }
   std::filesystem::create_directories(opt.out_dir);
