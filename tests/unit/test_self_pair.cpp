@@ -8,9 +8,14 @@
 
 #include "flume/equations/acceleration_sum.hpp"
 #include "flume/equations/continuity_density_bl4.hpp"
+#include "flume/equations/density_rate_euler_w350.hpp"
+#include "flume/equations/density_rate_weak_w379.hpp"
 #include "flume/equations/density_summation.hpp"
+#include "flume/equations/energy_euler_w352.hpp"
+#include "flume/equations/energy_weak_w381.hpp"
 #include "flume/equations/force_bonet_lok_20.hpp"
 #include "flume/equations/force_bonet_lok_7.hpp"
+#include "flume/equations/force_weak_w380.hpp"
 #include "flume/equations/own.hpp"
 #include "flume/equations/velocity_gradient_bl22.hpp"
 #include "flume/equations/viscosity_artificial_monaghan.hpp"
@@ -27,6 +32,8 @@ ParticleSet<2> one_particle() {
   ps.c[0] = 21.0;
   ps.grad_v[0] = Mat<2>{{0.4, -1.1, 2.0, 0.3}};
   ps.stress[0] = Mat<2>{{1e-3, 2e-3, 2e-3, -1e-3}};
+  ps.e[0] = 1.7;
+  ps.L[0] = Mat<2>{{1.1, 0.2, -0.1, 0.9}};
   return ps;
 }
 
@@ -65,6 +72,19 @@ TEST(SelfPair, GradientOnlyEquationsAddExactZeros) {
   expect_zero_self_pair(bl22, ps, "BL (22)");
   AccelerationSum<2, ForceBonetLok7<2>, ViscosityArtificialMonaghan<2>> sum{ps, Vec<2>{}, bl7, av};
   expect_zero_self_pair(sum, ps, "AccelerationSum");
+  // The thesis's equations, gas (q = p) and liquid (q = 1), plain and renormalized.
+  for (const bool gas : {true, false}) {
+    expect_zero_self_pair(DensityRateEulerW350<2>{ps, ps.v, gas}, ps, "W (3.50)");
+    expect_zero_self_pair(DensityRateWeakW379<2>{ps, ps.v, gas}, ps, "W (3.79)");
+    expect_zero_self_pair(DensityRateWeakW379<2, RenormalizedGradient>{ps, ps.v, gas}, ps,
+                          "W (4.19)");
+  }
+  expect_zero_self_pair(EnergyEulerW352<2>{ps, ps.v, 1.0, 2.0}, ps, "W (3.52)");
+  expect_zero_self_pair(ForceWeakW380<2>{ps, 1.0, 2.0}, ps, "W (3.80)");
+  expect_zero_self_pair(ForceWeakW380<2, RenormalizedGradient>{ps, 1.0, 2.0}, ps, "W (4.20)");
+  expect_zero_self_pair(EnergyWeakW381<2>{ps, ps.v, 1.0, 2.0}, ps, "W (3.81)");
+  expect_zero_self_pair(EnergyWeakW381<2, RenormalizedGradient>{ps, ps.v, 1.0, 2.0}, ps,
+                        "W (4.21)");
 }
 
 TEST(SelfPair, EquationsWithAWTermKeepTheirSelfPair) {
