@@ -38,6 +38,13 @@ Physics<D> build_physics(const CaseSpec& spec) {
   phys.eos.gamma = spec.gamma;
   phys.eos.kappa = spec.bulk_modulus;
   phys.mu = spec.mu;
+  phys.viscous = spec.viscous_term == "w511"  ? ViscousTerm::w511
+                 : spec.viscous_term == "w57" ? ViscousTerm::w57
+                                              : ViscousTerm::bl24;
+  phys.les.on = spec.turbulence == "smagorinsky";
+  phys.les.cs = spec.smagorinsky_cs;
+  phys.les.ci = spec.yoshizawa_ci;
+  phys.les.delta = spec.filter_width > 0.0 ? spec.filter_width : spec.spacing;
   phys.gravity = to_vec<D>(spec.gravity);
   phys.av_alpha = spec.alpha;
   phys.av_beta = spec.beta;
@@ -257,6 +264,8 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   config.cfl = spec.cfl;
   config.fixed_dt = spec.dt;
   config.shepard_every = spec.shepard_every;
+  config.xsph = spec.xsph;
+  config.step_rule = spec.time_step == "w388" ? StepRule::w388 : StepRule::bl63;
   return Simulation<D>(build_particles<D>(spec, phys), walls, std::move(scheme), phys, config);
 }
 

@@ -152,6 +152,27 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
            fmt::format("= \"evolving\" (W (2.22)) is for the thesis's schemes (density w350 or "
                        "w379: sph-euler, wsph, rsph), not density \"{}\"",
                        s.density));
+  s.time_step = r.one_of("scheme.time_step", {"bl63", "w388"});
+  // BL (59) and the gradient-corrected force carry the viscous stress 2 mu d' themselves.
+  const bool corrected = s.density == "continuity" && s.correction != "none";
+  s.viscous_term = r.one_of("scheme.viscous_term", {"bl24", "w511", "w57"});
+  if (corrected && s.viscous_term != "bl24")
+    r.fail("scheme.viscous_term",
+           fmt::format("= \"{}\" is not available with correction \"{}\": the corrected force "
+                       "carries the viscous stress of BL (22)-(25) (bl24)",
+                       s.viscous_term, s.correction));
+  s.turbulence = r.str("scheme.turbulence").empty()
+                     ? rows.turbulence
+                     : r.one_of("scheme.turbulence", {"none", "smagorinsky"});
+  if (corrected && s.turbulence != "none")
+    r.fail("scheme.turbulence",
+           fmt::format("= \"{}\" is not available with correction \"{}\" (its force has no "
+                       "sub-grid stress term)",
+                       s.turbulence, s.correction));
+  s.smagorinsky_cs = r.in_range("scheme.smagorinsky_cs", 0.0, 1.0);
+  s.yoshizawa_ci = r.in_range("scheme.yoshizawa_ci", 0.0, 1.0);
+  s.filter_width = r.non_negative("scheme.filter_width");
+  s.xsph = r.in_range("scheme.xsph", 0.0, 1.0);
   s.cfl = r.in_range("scheme.cfl", 1e-6, 1.0);
   s.alpha = r.non_negative("scheme.alpha");
   s.beta = r.non_negative("scheme.beta");
@@ -174,6 +195,11 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
            fmt::format("= \"ideal_gas\" needs a scheme with an energy equation (sph-euler, wsph, "
                        "rsph: force w351 or w380); force \"{}\" has none",
                        s.force));
+  if (s.eos == "ideal_gas" && s.turbulence != "none")
+    r.fail("scheme.turbulence",
+           fmt::format("= \"{}\" (LES-SPH, W 5.6) models a weakly compressible liquid: use "
+                       "eos.kind = \"tait\"",
+                       s.turbulence));
   s.gamma = r.in_range("eos.gamma", 1.0, 20.0);
   if (s.eos == "ideal_gas" && !(s.gamma > 1.0))
     r.fail("eos.gamma", "must exceed 1 for an ideal gas (p = (gamma - 1) rho e)");
@@ -414,6 +440,7 @@ toml::table spec_to_table(const CaseSpec& spec, toml::table t) {
   scheme->insert_or_assign("density", spec.density);
   scheme->insert_or_assign("force", spec.force);
   scheme->insert_or_assign("correction", spec.correction);
+  scheme->insert_or_assign("turbulence", spec.turbulence);
   auto* eos = t["eos"].as_table();
   eos->insert_or_assign("bulk_modulus", spec.bulk_modulus);
   eos->insert_or_assign("sound_speed", spec.sound_speed);

@@ -24,8 +24,8 @@ dt = 0.0               # fixed time step, s; 0 = the CFL rule of BL (63)
 spacing = 0.001        # initial particle spacing dx, m (particles on a square lattice)
 
 [scheme]
-preset = "continuity"  # standard | continuity | inconsistent | csph | sph-euler | wsph | rsph
-                       # (spec/methods.md)
+preset = "continuity"  # standard | continuity | inconsistent | csph | sph-euler | wsph | rsph |
+                       # les-sph (spec/methods.md)
 kernel = "cubic_spline"  # cubic_spline | quintic_spline | gaussian | wendland_c2
 h_over_dx = 1.3        # smoothing length h = h_over_dx * spacing
 density = ""           # override of the preset's row: summation (BL (1)) | continuity (BL (4)) |
@@ -42,7 +42,19 @@ integrator = "leapfrog"  # leapfrog (BL (61)-(62)) | runge_kutta (W (3.85)-(3.87
                        # modified_runge_kutta (W (3.92), keeps linear momentum)
 smoothing_length = "fixed"  # fixed | evolving (W (2.22) with the scheme's own d rho/dt; an
                        # evolved density only)
-cfl = 0.3              # Courant number C_FL of BL (63)
+time_step = "bl63"     # bl63: BL (63) with the body-force and viscous limits | w388: W (3.88)-
+                       # (3.90), the local sound speed and the pairs' max |h u_ij.x_ij|/|x_ij|^2,
+                       # times cfl (W: 0.3); both with the viscous limit (time_step.hpp)
+viscous_term = "bl24"  # how fluid.viscosity enters: bl24 (BL (22)-(25)) | w511 (W (5.11), grad u
+                       # from W (5.5)) | w57 (Morris, W (5.7)); only bl24 with a corrected
+                       # continuity density (csph, gradient, shepard: BL (59) holds its stress)
+turbulence = ""        # override of the preset's row: none | smagorinsky (LES-SPH, W (5.31)-
+                       # (5.34); a liquid; not with a corrected continuity density)
+smagorinsky_cs = 0.12  # C_s of W (5.19), -
+yoshizawa_ci = 0.0066  # C_I of W (5.32), -
+filter_width = 0.0     # LES filter width Delta, m; 0 = particles.spacing (W)
+xsph = 0.0             # XSPH eps, W (6.6), 0 <= eps <= 1 (0.5 usual); 0 = off
+cfl = 0.3              # Courant number C_FL of BL (63), or W (3.90)'s factor
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off
 beta = 0.0             # artificial viscosity beta, W (3.18)
 shepard_every = 0      # steps between Shepard density filters W (6.3) (W: 40); 0 = off;

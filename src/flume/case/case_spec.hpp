@@ -91,6 +91,13 @@ struct CaseSpec {
   std::string correction;                  // resolved row
   std::string smoothing_length = "fixed";  // or "evolving", W (2.22)
   std::string integrator = "leapfrog";     // or "runge_kutta", "modified_runge_kutta"
+  std::string time_step = "bl63";          // or "w388": W (3.88)-(3.90)
+  std::string viscous_term = "bl24";       // or "w511" (W (5.11)), "w57" (Morris)
+  std::string turbulence = "none";         // resolved row: or "smagorinsky" (LES-SPH)
+  double smagorinsky_cs = 0.12;            // C_s of W (5.19)
+  double yoshizawa_ci = 0.0066;            // C_I of W (5.32)
+  double filter_width = 0.0;               // m, Delta of W (5.19); 0 = the spacing
+  double xsph = 0.0;                       // XSPH's eps, W (6.6); 0 = off
   double h_over_dx = 1.3;
   double cfl = 0.3;
   double alpha = 0.0;

@@ -16,15 +16,18 @@ namespace flume {
 
 // The optional per-particle fields, as bits of ParticleSet::optional.
 enum OptionalField : unsigned {
-  kFieldGradV = 1u << 0,    // grad_v
-  kFieldStress = 1u << 1,   // stress
-  kFieldDrho = 1u << 2,     // drho
-  kFieldShepard = 1u << 3,  // shepard, gamma
-  kFieldL = 1u << 4,        // L, bl41_deviation
-  kFieldEnergy = 1u << 5,   // e (state), de
+  kFieldGradV = 1u << 0,          // grad_v
+  kFieldStress = 1u << 1,         // stress
+  kFieldDrho = 1u << 2,           // drho
+  kFieldShepard = 1u << 3,        // shepard, gamma
+  kFieldL = 1u << 4,              // L, bl41_deviation
+  kFieldEnergy = 1u << 5,         // e (state), de
   kFieldSmoothingRate = 1u << 6,  // dh
   kFieldStepStart = 1u << 7,      // x_start, v_start, rho_start, h_start (+ e_start with e)
-  kFieldsAll = (1u << 8) - 1,
+  kFieldEddy = 1u << 8,           // nu_t
+  kFieldXsph = 1u << 9,           // xsph
+  kFieldSignal = 1u << 10,        // signal
+  kFieldsAll = (1u << 11) - 1,
 };
 
 template <int D>
@@ -55,7 +58,12 @@ struct ParticleSet {
   std::vector<double> de;    // internal energy rate, W/kg                           (optional)
   std::vector<double> dh;    // smoothing length rate W (2.22), m/s                  (optional)
   std::vector<M> grad_v;     // velocity gradient BL (22), (grad v)_{kl} = d v_k/d x_l, 1/s (opt.)
-  std::vector<M> stress;     // deviatoric stress sigma' = 2 mu d', BL (23)-(24), Pa    (optional)
+  std::vector<M> stress;     // the stress of BL (24)'s pair: sigma' = 2 mu d', BL (23)-(24), or
+                             // W (5.11)'s, plus LES's -tau W (5.31)-(5.32), Pa        (optional)
+  std::vector<double> nu_t;  // LES's eddy viscosity nu_r, W (5.19), m^2/s              (optional)
+  std::vector<V> xsph;       // XSPH's drift correction W (6.6), m/s                    (optional)
+  // max_j |h_i u_ij . x_ij| / (|x_ij|^2 + eta^2) of the time step W (3.88), m/s        (optional)
+  std::vector<double> signal;
 
   // --- kernel and gradient corrections (BL section 4) ---
   std::vector<double> shepard;  // sum_b V_b W_b(x_a), the denominator of BL (53)-(54), - (opt.)
@@ -110,6 +118,9 @@ struct ParticleSet {
     if (bits & kFieldSmoothingRate) f(dh);
     if (bits & kFieldGradV) f(grad_v);
     if (bits & kFieldStress) f(stress);
+    if (bits & kFieldEddy) f(nu_t);
+    if (bits & kFieldXsph) f(xsph);
+    if (bits & kFieldSignal) f(signal);
     if (bits & kFieldShepard) {
       f(shepard);
       f(gamma);

@@ -14,6 +14,8 @@
 // kept exactly by central forces (BL 3.3.1): the staggered angular momentum of the diagnostics.
 #pragma once
 
+#include <vector>
+
 #include "flume/core/particle_set.hpp"
 #include "flume/integrators/runge_kutta.hpp"
 #include "flume/schemes/particle_passes.hpp"
@@ -60,10 +62,12 @@ class LeapFrog {
   // rho^{n+1} = rho^n + dt drho (drho evaluated after the kick; e and h likewise when they
   // evolve), then the drift BL (62): x^{n+1} = x^n + dt v^{n+1/2}, and the prediction
   // v^{n+1} = v^{n+1/2} + (dt/2) a^n used by the velocity-dependent terms of the next step and
-  // by the kinetic energy; then after(b, e), as kick_and_drift.
+  // by the kinetic energy; then after(b, e), as kick_and_drift. With XSPH W (6.6) the drift
+  // velocity is v^{n+1/2} + xsph (the correction of v^{n+1/2}, xsph_w66.hpp).
   template <class After>
   long advance_state_and_drift(ParticleSet<D>& ps, double dt, EvolvedFields evolved, long none,
-                               const After& after) const {
+                               const After& after,
+                               const std::vector<Vec<D>>* xsph = nullptr) const {
     return least_over_blocks(ps.n_real, none, [&](std::size_t b, std::size_t e) {
       const double step = dt;
       const auto advance = [&](std::vector<double>& field, const std::vector<double>& rate) {
@@ -80,6 +84,15 @@ class LeapFrog {
       double* __restrict v = components(ps.v);
       const double* __restrict v_half = components(ps.v_half);
       const double* __restrict a = components(ps.a);
+      if (xsph) {
+        const double* __restrict dx = components(*xsph);
+#pragma omp simd
+        for (std::size_t c = b * D; c < e * D; ++c) {
+          x[c] += (v_half[c] + dx[c]) * step;
+          v[c] = v_half[c] + a[c] * (0.5 * step);
+        }
+        return after(b, e);
+      }
 #pragma omp simd
       for (std::size_t c = b * D; c < e * D; ++c) {
         x[c] += v_half[c] * step;

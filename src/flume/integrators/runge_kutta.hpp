@@ -15,7 +15,14 @@
 // twice. Neither keeps angular momentum exactly (methods.md).
 // ps.v_half holds the velocity whose momentum the step keeps, v^{n+1}, for the diagnostics
 // (and, inside a modified step, U* of W (3.92)).
+// XSPH W (6.6) changes dx/dt = u to U = u + xsph(u) (xsph_w66.hpp): given the correction of the
+// state's velocity (u^n at the start; at the stage u* of W (3.85)-(3.86), or W (3.92)'s U*
+// with the stage's neighbours), the position updates use U. In the modified step
+// x^{n+1} = x^n + (dt/2)(U* + U^n) is then taken as x^{n+1/2} + (dt/2) U*: the same sum, since
+// x^{n+1/2} = x^n + (dt/2) U^n, without keeping U^n's correction.
 #pragma once
+
+#include <vector>
 
 #include "flume/core/particle_set.hpp"
 #include "flume/schemes/particle_passes.hpp"
@@ -42,16 +49,18 @@ class RungeKutta {
   // From Phi^n with its rates F^n in ps to the stage state (Phi* of W (3.85), Phi^{n+1/2} of
   // W (3.92)), keeping Phi^n; after(b, e) follows each block as in LeapFrog::kick_and_drift.
   template <class After>
-  long to_stage(ParticleSet<D>& ps, double dt, long none, const After& after) const {
+  long to_stage(ParticleSet<D>& ps, double dt, long none, const After& after,
+                const std::vector<Vec<D>>* xsph = nullptr) const {
     return least_over_blocks(ps.n_real, none, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         ps.x_start[i] = ps.x[i];
         ps.v_start[i] = ps.v[i];
+        const Vec<D> drift = xsph ? ps.v_start[i] + (*xsph)[i] : ps.v_start[i];  // U^n
         if (kind_ == RungeKuttaKind::midpoint) {
-          ps.x[i] = ps.x_start[i] + ps.v_start[i] * (0.5 * dt);  // W (3.85)
+          ps.x[i] = ps.x_start[i] + drift * (0.5 * dt);  // W (3.85)
           ps.v[i] = ps.v_start[i] + ps.a[i] * (0.5 * dt);
         } else {
-          const Vec<D> x_star = ps.x_start[i] + ps.v_start[i] * dt;  // W (3.92), first row
+          const Vec<D> x_star = ps.x_start[i] + drift * dt;  // W (3.92), first row
           const Vec<D> u_star = ps.v_start[i] + ps.a[i] * dt;
           ps.x[i] = (x_star + ps.x_start[i]) * 0.5;  // second row
           ps.v[i] = (u_star + ps.v_start[i]) * 0.5;
@@ -72,14 +81,19 @@ class RungeKutta {
 
   // From the stage state, with its rates (F* or F^{n+1/2}) in ps, to Phi^{n+1}.
   template <class After>
-  long to_end(ParticleSet<D>& ps, double dt, long none, const After& after) const {
+  long to_end(ParticleSet<D>& ps, double dt, long none, const After& after,
+              const std::vector<Vec<D>>* xsph = nullptr) const {
     return least_over_blocks(ps.n_real, none, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         if (kind_ == RungeKuttaKind::midpoint) {
-          const Vec<D> x2 = ps.x_start[i] + ps.v[i] * (0.5 * dt);  // W (3.86): dx/dt = u*
+          const Vec<D> drift = xsph ? ps.v[i] + (*xsph)[i] : ps.v[i];  // dx/dt = u* (+ XSPH)
+          const Vec<D> x2 = ps.x_start[i] + drift * (0.5 * dt);        // W (3.86)
           const Vec<D> u2 = ps.v_start[i] + ps.a[i] * (0.5 * dt);
           ps.x[i] = x2 * 2.0 - ps.x_start[i];  // W (3.87)
           ps.v[i] = u2 * 2.0 - ps.v_start[i];
+        } else if (xsph) {
+          ps.x[i] = ps.x[i] + (ps.v_half[i] + (*xsph)[i]) * (0.5 * dt);  // W (3.92), see above
+          ps.v[i] = ps.v_start[i] + ps.a[i] * dt;
         } else {
           ps.x[i] = ps.x_start[i] + (ps.v_half[i] + ps.v_start[i]) * (0.5 * dt);  // W (3.92)
           ps.v[i] = ps.v_start[i] + ps.a[i] * dt;

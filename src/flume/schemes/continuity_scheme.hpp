@@ -1,7 +1,7 @@
 // Preset "continuity": continuity density BL (2)-(4) + force BL (20), variationally consistent
 // (BL 2.4.2). Algorithm, one step (rho_a is the integrator's density at the integer time):
 //   1. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts                BL (60)
-//   2. sweep (if mu > 0): grad v_a                                         BL (22)
+//   2. sweep (if mu > 0 or LES): grad v_a, the stress    BL (22), common_steps.hpp
 //   3. sweep: a_a = g + pressure force BL (20) + viscous BL (24) + artificial viscosity
 //   -- leap-frog kick --
 //   4. sweep: d rho_a/dt = -rho_a div v_a with v^{n+1/2}                   BL (2), (4)
@@ -19,14 +19,12 @@ class ContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
  public:
   explicit ContinuityScheme(Physics<D> phys) : phys_(std::move(phys)) {}
 
-  unsigned fields() const override {
-    return kFieldDrho | (phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u);
-  }
+  unsigned fields() const override { return kFieldDrho | stress_fields(phys_); }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
     update_pressure(ps, phys_, halo);
-    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
+    if (phys_.stress_term()) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_);
     ForceBonetLok20<D> pressure{ps};
     return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }

@@ -1,5 +1,6 @@
 // Base of the schemes that integrate the density in time (continuity, CSPH): the kernel's
-// support, and the Shepard density filter W (6.3) that the simulation applies every N steps.
+// support, the Shepard density filter W (6.3) that the simulation applies every N steps, and
+// XSPH W (6.6).
 #pragma once
 
 #include "flume/schemes/common_steps.hpp"
@@ -15,6 +16,10 @@ class EvolvedDensityScheme : public Scheme<D> {
   void filter_density(ParticleSet<D>& ps, const SweepContext<D>& ctx,
                       const Halo<D>& halo) const final {
     shepard_filter<D, Kernel>(ctx, ps, halo);
+  }
+  void xsph(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+            std::vector<Vec<D>>& u, double eps) const final {
+    xsph_correction<D, Kernel>(ctx, ps, halo, u, eps);
   }
 };
 

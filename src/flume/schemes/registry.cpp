@@ -19,6 +19,8 @@ const std::map<std::string, SchemeRows>& presets() {
       {"sph-euler", {"w350", "w351", "none"}},
       {"wsph", {"w379", "w380", "none"}},
       {"rsph", {"w379", "w380", "renormalized"}},
+      // W 6 calls it LES-SPH: weak SPH with the sub-grid stress, W (5.33)-(5.34).
+      {"les-sph", {"w379", "w380", "none", "fixed", "smagorinsky"}},
   };
   return table;
 }

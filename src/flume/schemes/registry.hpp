@@ -25,6 +25,9 @@ struct SchemeRows {
   std::string correction = "none";
   // W (2.22): "fixed" or "evolving" (the evolved-density schemes of W: sph-euler, wsph, rsph).
   std::string smoothing_length = "fixed";
+  // The sub-grid model: "none", or "smagorinsky" (LES-SPH, W (5.31)-(5.34)); it acts through
+  // Physics (its stress enters BL (24)'s pair form), so it does not pick a scheme class.
+  std::string turbulence = "none";
 };
 
 // The rows of a named preset, or nullopt for an unknown name.

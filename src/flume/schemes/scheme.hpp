@@ -44,6 +44,10 @@ class Scheme {
   // so the case reader does not allow the filter with it.)
   virtual void filter_density(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
                               const Halo<D>& /*halo*/) const {}
+  // XSPH W (6.6): ps.xsph, the drift correction of the velocity field u (ghosts refreshed here;
+  // common_steps.hpp, xsph_correction).
+  virtual void xsph(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+                    std::vector<Vec<D>>& u, double eps) const = 0;
 };
 
 }  // namespace flume

@@ -8,7 +8,7 @@
 // For a liquid (Tait) the energy equation is left out (the pressure depends on rho alone) and
 // W (3.50) takes p_j/p_i = 1 (erratum 6). Algorithm, one evaluation of the rates:
 //   1. p_i = p(rho_i, e_i), c_i; refresh ghosts
-//   2. sweep (if mu > 0): grad v, BL (22)-(24) viscous stress (not in W's Euler equations)
+//   2. sweep (if mu > 0 or LES): grad v, the stress (common_steps.hpp; not in W's Euler equations)
 //   3. sweep: a_i = g + W (3.51)
 //   -- leap-frog kick (or the Runge-Kutta stage's velocity) --
 //   4. sweep: d rho_i/dt, d e_i/dt with the velocity u of the integrator
@@ -32,14 +32,13 @@ class SphEulerScheme final : public EvolvedDensityScheme<D, Kernel> {
   bool evolves_smoothing_length() const override { return evolving_h_; }
   unsigned fields() const override {
     return kFieldDrho | (phys_.eos.is_gas() ? kFieldEnergy : 0u) |
-           (evolving_h_ ? kFieldSmoothingRate : 0u) |
-           (phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u);
+           (evolving_h_ ? kFieldSmoothingRate : 0u) | stress_fields(phys_);
   }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
     update_pressure(ps, phys_, halo);
-    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
+    if (phys_.stress_term()) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_);
     ForceBonetLok7<D> pressure{ps};  // + Pi_ij / rho_bar^2, added by accelerate
     return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }

@@ -8,7 +8,7 @@
 //   1. sweep: rho_a = sum_b m_b W_ab (or W~_ab)            BL (1), (53), (47)
 //   2. p_a = kappa((rho_a/rho0)^gamma - 1) (in the same pass as the sweep's finish);
 //      refresh ghosts                                       BL (60)
-//   3. sweep (if mu > 0): grad v_a                          BL (22)
+//   3. sweep (if mu > 0 or LES): grad v_a, the stress       BL (22), common_steps.hpp
 //   4. sweep: a_a = g + pressure force + viscous + artificial viscosity
 #pragma once
 
@@ -27,7 +27,11 @@ class SummationScheme final : public Scheme<D> {
   explicit SummationScheme(Physics<D> phys) : phys_(std::move(phys)) {}
   double support() const override { return Kernel::support; }
   bool evolves_density() const override { return false; }
-  unsigned fields() const override { return phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u; }
+  void xsph(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
+            std::vector<Vec<D>>& u, double eps) const override {
+    xsph_correction<D, Kernel>(ctx, ps, halo, u, eps);
+  }
+  unsigned fields() const override { return stress_fields(phys_); }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
@@ -46,7 +50,7 @@ class SummationScheme final : public Scheme<D> {
     halo.update_scalar(ps, ps.p);
     halo.update_scalar(ps, ps.c);
 
-    if (phys_.mu > 0.0) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_.mu);
+    if (phys_.stress_term()) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_);
     Force<D> pressure{ps};
     return accelerate<D, Kernel>(ctx, ps, phys_, limit, pressure);
   }

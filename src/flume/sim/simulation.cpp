@@ -36,9 +36,9 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       scheme_(std::move(scheme)),
       phys_(std::move(physics)),
       config_(config),
-      limit_(phys_, config_.cfl) {
+      limit_(phys_, config_.cfl, config_.step_rule) {
   ps_.drop_ghosts();
-  ps_.use_only(scheme_->fields() |
+  ps_.use_only(scheme_->fields() | limit_.fields() | (config_.xsph > 0.0 ? kFieldXsph : 0u) |
                (config_.integrator == Integrator::leap_frog ? 0u : RungeKutta<D>::fields()));
   // The pressure of the starting density, so that the state written before the first step
   // (snapshot 0) shows it; every step recomputes it.
@@ -96,6 +96,21 @@ double Simulation<D>::choose_step(double dt_stable, double max_dt) {
 }
 
 template <int D>
+void Simulation<D>::prepare_step_rule(double range) {
+  if (config_.step_rule != StepRule::w388) return;
+  PhaseClock::Scope phase(&clock_, "time_step");
+  signal_speed_w388(grid_, ps_, range);
+}
+
+template <int D>
+const std::vector<Vec<D>>* Simulation<D>::xsph_of(const SweepContext<D>& ctx,
+                                                  std::vector<Vec<D>>& u) {
+  if (!(config_.xsph > 0.0)) return nullptr;
+  scheme_->xsph(ps_, ctx, halo_, u, config_.xsph);
+  return &ps_.xsph;
+}
+
+template <int D>
 void Simulation<D>::step(double max_dt) {
   switch (config_.integrator) {
     case Integrator::leap_frog:
@@ -117,6 +132,7 @@ void Simulation<D>::step_leap_frog(double max_dt) {
 
   if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
     scheme_->filter_density(ps_, ctx, halo_);
+  prepare_step_rule(range);
 
   // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
   const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
@@ -134,12 +150,15 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   };
   long bad = none;
   const EvolvedFields state = evolved();
-  if (state.density || state.energy || state.smoothing_length) {
+  const bool xsph = config_.xsph > 0.0;
+  if (state.density || state.energy || state.smoothing_length || xsph) {
+    // The state's rates and XSPH's drift correction take the kicked velocity v^{n+1/2}.
     integrator_.kick(ps_, dt);
     phase.reset();
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v_half);
+    const std::vector<Vec<D>>* drift = xsph_of(ctx, ps_.v_half);
     phase.emplace(&clock_, "integration");
-    bad = integrator_.advance_state_and_drift(ps_, dt, state, none, put_back_and_check);
+    bad = integrator_.advance_state_and_drift(ps_, dt, state, none, put_back_and_check, drift);
   } else {
     bad = integrator_.kick_and_drift(ps_, dt, none, put_back_and_check);
   }
@@ -153,14 +172,18 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   const RungeKutta<D> rk(kind, evolved());
   const long none = static_cast<long>(ps_.n_real);
   double range = neighbours_at(time_);
+  // The rates of the present state; with XSPH also the drift correction of its velocity (u^n,
+  // the midpoint's u*, the modified step's U*), returned (else null).
   const auto rates = [&](double* stable) {
     const SweepContext<D> ctx{grid_, work_, uniform_h_, &clock_};
-    if (stable && config_.shepard_every > 0 && steps_ > 0 &&
-        steps_ % config_.shepard_every == 0)
+    if (stable && config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
       scheme_->filter_density(ps_, ctx, halo_);
+    if (stable) prepare_step_rule(range);
     const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v);
     if (stable) *stable = dt_stable;
+    const bool stage_of_modified = !stable && kind == RungeKuttaKind::modified;
+    return xsph_of(ctx, stage_of_modified ? ps_.v_half : ps_.v);
   };
   auto put_back_and_check = [&](std::size_t b, std::size_t e) {
     walls_.put_back(ps_, b, e, range);
@@ -168,13 +191,13 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   };
 
   double dt_stable = 0.0;
-  rates(&dt_stable);
+  const std::vector<Vec<D>>* drift = rates(&dt_stable);
   std::optional<PhaseClock::Scope> phase;
   phase.emplace(&clock_, "integration");
   const double dt = choose_step(dt_stable, max_dt);
   // The stage state stands at t + dt/2 (W (3.85); W (3.92)'s Phi^{n+1/2}).
   walls_.set_time(time_ + 0.5 * dt);
-  long bad = rk.to_stage(ps_, dt, none, put_back_and_check);
+  long bad = rk.to_stage(ps_, dt, none, put_back_and_check, drift);
   ps_.drop_ghosts();
   if (bad < none) {
     finish_step(0.5 * dt, bad);  // reports the particle, at the stage's time
@@ -182,10 +205,10 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   }
   phase.reset();
   range = neighbours_at(time_ + 0.5 * dt);
-  rates(nullptr);
+  drift = rates(nullptr);
   phase.emplace(&clock_, "integration");
   walls_.set_time(time_ + dt);
-  bad = rk.to_end(ps_, dt, none, put_back_and_check);
+  bad = rk.to_end(ps_, dt, none, put_back_and_check, drift);
   finish_step(dt, bad);
 }
 

@@ -24,9 +24,11 @@ enum class Integrator { leap_frog, runge_kutta, modified_runge_kutta };
 template <int D>
 struct SimulationConfig {
   Integrator integrator = Integrator::leap_frog;
-  double cfl = 0.3;       // Courant number of BL (63)
-  double fixed_dt = 0.0;  // s; 0 means the CFL rule
-  int shepard_every = 0;  // steps between Shepard density filters W (6.3); 0 = never
+  double cfl = 0.3;                     // Courant number of BL (63)
+  double fixed_dt = 0.0;                // s; 0 means the CFL rule
+  int shepard_every = 0;                // steps between Shepard density filters W (6.3); 0 = never
+  double xsph = 0.0;                    // XSPH's eps, W (6.6); 0 = off
+  StepRule step_rule = StepRule::bl63;  // BL (63) or W (3.88)-(3.90) (time_step.hpp)
 };
 
 template <int D>
@@ -62,6 +64,10 @@ class Simulation {
   double choose_step(double dt_stable, double max_dt);
   void step_leap_frog(double max_dt);
   void step_runge_kutta(double max_dt, RungeKuttaKind kind);
+  // Before the rates: the pair maximum of W (3.88), when that is the step rule.
+  void prepare_step_rule(double range);
+  // XSPH's correction of the velocity field u into ps.xsph (when on), or null.
+  const std::vector<Vec<D>>* xsph_of(const SweepContext<D>& ctx, std::vector<Vec<D>>& u);
   // The end of every step: ghosts dropped, the clock moved on, the first unsound particle
   // (if any, bad < n_real) reported.
   void finish_step(double dt, long bad);
@@ -105,7 +111,7 @@ class Simulation {
   std::vector<Vec<D>> ghost_x_;  // ghost positions before sorting (reused)
   double time_ = 0.0;
   double last_dt_ = 0.0;
-  double first_dt_ = 0.0;  // the step rule's first value, s
+  double first_dt_ = 0.0;   // the step rule's first value, s
   double uniform_h_ = 0.0;  // the common smoothing length of this step's particles, or 0
   long steps_ = 0;
   PhaseClock clock_;
