@@ -9,6 +9,7 @@
 #include "flume/case/case_spec.hpp"
 #include "flume/run/runner.hpp"
 #include "flume/validation/curve_compare.hpp"
+#include "flume/validation/density_range.hpp"
 
 namespace flume {
 
@@ -17,6 +18,13 @@ struct SeriesResult {
   RunResult run;
   std::vector<std::vector<CurvePoint>> curves;  // one per CaseSpec::curves entry
   std::vector<double> profile_errors;           // one per CaseSpec::profiles entry (L1)
+  // The same configuration at twice the spacing (profile cases: convergence.hpp); run only when
+  // CaseResult::coarse_spacing > 0.
+  RunResult coarse_run;
+  std::vector<double> coarse_profile_errors;  // one per CaseSpec::profiles entry (L1)
+  // A liquid's density over the run, from diagnostics.csv (has_density_range false for a gas).
+  bool has_density_range = false;
+  DensityRange density;
 };
 
 struct CaseResult {
@@ -31,6 +39,7 @@ struct CaseResult {
   std::vector<std::string> diagnostics_plots;  // per spec.diagnostics_plots entry: PNG or ""
   std::vector<double> profile_tolerances;      // per profile check (quick or full)
   std::vector<std::string> profile_plots;      // per profile check: PNG or ""
+  double coarse_spacing = 0.0;  // m, particles.spacing of the coarser runs; 0 = none run
 };
 
 // Max and mean of the errors of a curve.

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flume/validation/report_tables.hpp"
+
 namespace flume {
 
 ErrorSummary summarize(const std::vector<CurvePoint>& points) {
@@ -19,13 +21,15 @@ ErrorSummary summarize(const std::vector<CurvePoint>& points) {
 
 namespace {
 
-std::string run_line(const CaseSpec& spec, const SeriesResult& s) {
-  if (!s.run.completed) return fmt::format("- `{}`: **failed**: {}\n", s.label, s.run.error);
+// `note` follows the label: " (coarse)" for a convergence run.
+std::string run_line(const std::string& label, const RunResult& run, double spacing,
+                     const std::string& note = "") {
+  if (!run.completed) return fmt::format("- `{}`{}: **failed**: {}\n", label, note, run.error);
   return fmt::format(
-      "- `{}`: {} particles, {} steps, {:.1f} s wall time ({:.3g} particle-steps/s, "
+      "- `{}`{}: {} particles, {} steps, {:.1f} s wall time ({:.3g} particle-steps/s, "
       "{} threads), spacing {} m\n",
-      s.label, s.run.particles, s.run.steps, s.run.wall_seconds, s.run.particle_steps_per_second,
-      s.run.threads, spec.spacing);
+      label, note, run.particles, run.steps, run.wall_seconds, run.particle_steps_per_second,
+      run.threads, spacing);
 }
 
 // flume's value and signed error at reference abscissa x, or dashes where the series has none
@@ -175,7 +179,10 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     md += fmt::format("\n## {}\n\n{}\n\nRuns (scheme, kernel `{}`, h/dx = {}):\n\n", cr.spec.name,
                       cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
     for (const auto& s : cr.series)
-      md += run_line(cr.spec, s);
+      md += run_line(s.label, s.run, cr.spec.spacing);
+    if (cr.coarse_spacing > 0.0)
+      for (const auto& s : cr.series)
+        md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");
     if (!cr.overrides.empty()) {
       md += "\nEvery run with `--set`:";
       for (const auto& o : cr.overrides)
@@ -190,7 +197,8 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     if (!cr.series.front().run.completed) continue;
     for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
       md += curve_section(cr, c);
-    md += profile_section(cr) + diagnostics_section(cr) + pictures_section(cr);
+    md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) +
+          diagnostics_section(cr) + pictures_section(cr);
   }
   return md;
 }

@@ -13,6 +13,9 @@
 #include "flume/io/csv_table.hpp"
 #include "flume/validation/bundled_cases.hpp"
 #include "flume/validation/case_result.hpp"
+#include "flume/validation/convergence.hpp"
+#include "flume/validation/convergence_rows.hpp"
+#include "flume/validation/density_range.hpp"
 #include "flume/validation/profile_compare.hpp"
 #include "flume/validation/report.hpp"
 #include "flume/validation/theory_reference.hpp"
@@ -180,6 +183,17 @@ void plot_profiles(const std::filesystem::path& out_dir, CaseResult& cr) {
   }
 }
 
+// The relative L1 error of each of the case's profile checks, from the run's profile.csv.
+std::vector<double> profile_errors(const CaseSpec& spec, const std::filesystem::path& run_dir) {
+  if (spec.profiles.empty()) return {};
+  const ShockTube tube = shock_tube(spec);
+  const auto profile = io::read_csv(run_dir / "profile.csv");
+  std::vector<double> errors;
+  for (const auto& check : spec.profiles)
+    errors.push_back(profile_l1_error(tube, profile, check.field));
+  return errors;
+}
+
 CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   CaseResult cr;
   const auto file = bundled_case(name);
@@ -201,6 +215,9 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     overrides.push_back(v);
     configs.emplace_back(variant_label(v), overrides);
   }
+  // Profile cases also run every configuration at twice the spacing, to show convergence.
+  const auto coarse =
+      cr.spec.profiles.empty() ? std::vector<std::string>{} : coarser_overrides(cr.spec);
   std::vector<io::CsvData> probes;
   for (const auto& [label, overrides] : configs) {
     const CaseSpec spec = read_case(file, overrides);
@@ -224,11 +241,23 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
                                 check.absolute, check.statistic, check.window_from, to));
       }
     }
-    if (s.run.completed && !spec.profiles.empty()) {
-      const ShockTube tube = shock_tube(spec);
-      const auto profile = io::read_csv(run_dir / "profile.csv");
-      for (const auto& check : spec.profiles)
-        s.profile_errors.push_back(profile_l1_error(tube, profile, check.field));
+    if (s.run.completed) s.profile_errors = profile_errors(spec, run_dir);
+    if (s.run.completed && spec.eos == "tait") {
+      s.has_density_range = true;
+      s.density = density_range(io::read_csv(run_dir / "diagnostics.csv"), spec.rho0);
+    }
+    if (!coarse.empty()) {
+      auto coarse_sets = overrides;
+      coarse_sets.insert(coarse_sets.end(), coarse.begin(), coarse.end());
+      const CaseSpec coarse_spec = read_case(file, coarse_sets);
+      cr.coarse_spacing = coarse_spec.spacing;
+      const auto coarse_dir = opt.out_dir / name / "coarse" / label;
+      if (!opt.quiet)
+        std::cout << fmt::format("validate {}: {} at spacing {} m -> {}", name, label,
+                                 coarse_spec.spacing, coarse_dir.string())
+                  << std::endl;
+      s.coarse_run = run_case(coarse_spec, RunOptions{coarse_dir, opt.threads, true});
+      if (s.coarse_run.completed) s.coarse_profile_errors = profile_errors(coarse_spec, coarse_dir);
     }
     cr.series.push_back(std::move(s));
   }
@@ -327,6 +356,7 @@ int validate(const ValidateOptions& opt) {
   for (const auto& name : names) {
     results.push_back(validate_case(name, opt));
     all_pass = add_result_rows(results.back(), rows) && all_pass;
+    all_pass = add_convergence_rows(results.back(), rows) && all_pass;
   }
   io::write_file_atomic(opt.out_dir / "results.json", rows.dump(2) + "\n");
   io::write_file_atomic(opt.out_dir / "report.md", report_markdown(results, opt.quick));
