@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "flume/bench/bench.hpp"
@@ -15,12 +17,34 @@
 
 namespace {
 
+// The run directory must be a directory flume can write: an existing file in its place, or a
+// folder that cannot be made, is bad input (exit 2, one line), found before the run starts.
+void check_out_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw flume::InputError(fmt::format(
+        "--out {}: exists and is not a directory; name a new or existing folder", dir.string()));
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw flume::InputError(
+        fmt::format("--out {}: cannot create the run directory: {}", dir.string(), ec.message()));
+  const auto probe = dir / ".flume_write_test";
+  {
+    std::ofstream test(probe);
+    if (!test)
+      throw flume::InputError(
+          fmt::format("--out {}: the run directory is not writable", dir.string()));
+  }
+  std::filesystem::remove(probe, ec);
+}
+
 int cmd_run(const std::string& case_file, const std::string& out,
             const std::vector<std::string>& sets, int threads, bool quiet) {
   const flume::CaseSpec spec = flume::read_case(case_file, sets);
   flume::RunOptions opt;
   opt.out_dir =
       out.empty() ? std::filesystem::path("runs") / spec.name : std::filesystem::path(out);
+  check_out_dir(opt.out_dir);
   opt.threads = threads;
   opt.quiet = quiet;
   const auto result = flume::run_case(spec, opt);

@@ -1,6 +1,7 @@
 #include "flume/case/case_checks.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -91,6 +92,37 @@ class Reader {
 
 const char* axis_name(int k) {
   return k == 0 ? "x" : k == 1 ? "y" : "z";
+}
+
+// A run that cannot fit in the machine's memory is refused before anything is allocated (a
+// mistyped spacing would otherwise be killed by the kernel for lack of memory, exit 137). The
+// particle count is the blocks' lattice sites (an upper bound for an ellipsoid) or their random
+// counts; a particle holds at least kBytesPerParticle of state and derived fields (the leanest
+// preset's fields alone: flume bench reads 200-500 B per particle), and the cell grid indexes
+// particles with 32-bit integers.
+void check_fits_in_memory(const Reader& r, const CaseSpec& s) {
+  constexpr double kBytesPerParticle = 250.0;
+  double count = 0.0;
+  for (const auto& fb : s.blocks) {
+    if (fb.layout == "random") {
+      count += static_cast<double>(fb.count);
+      continue;
+    }
+    const double dx = fb.spacing > 0.0 ? fb.spacing : s.spacing;
+    double sites = 1.0;
+    for (int k = 0; k < s.dimension; ++k)
+      sites *= std::floor((fb.max[k] - fb.min[k]) / dx) + 1.0;
+    count += sites;
+  }
+  const double memory =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double need = count * kBytesPerParticle;
+  if (count > 2.0e9 || (memory > 0.0 && need > memory))
+    r.fail("particles.spacing",
+           fmt::format("= {:g} m gives about {:.3g} particles, which need at least {:.3g} GB "
+                       "({:g} bytes each; at most 2e9 particles); this machine has {:.3g} GB: "
+                       "use a larger spacing",
+                       s.spacing, count, need / 1e9, kBytesPerParticle, memory / 1e9));
 }
 
 }  // namespace
@@ -308,6 +340,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     tallest = std::max(tallest, fb.max[dim - 1] - fb.min[dim - 1]);
     s.blocks.push_back(fb);
   }
+  check_fits_in_memory(r, s);
 
   // Sound speed and bulk modulus: kappa = rho0 c0^2 / gamma, c0 = m u_max, u_max = sqrt(2 g H)
   // (BL (64), (66)) unless given.

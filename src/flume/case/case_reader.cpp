@@ -236,11 +236,22 @@ void apply_override(toml::table& user, const toml::table& defaults, const std::s
 }  // namespace
 
 CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(
+        fmt::format("{}: is a directory; give a case file (.toml): flume cases lists the bundled "
+                    "ones",
+                    file.string()));
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open the case file", file.string()));
   std::stringstream ss;
   ss << in.rdbuf();
-  return read_case_string(ss.str(), file, overrides);
+  const std::string text = ss.str();
+  // A NUL byte never occurs in a TOML file (toml++ would report a confusing syntax error).
+  if (text.find('\0') != std::string::npos)
+    throw InputError(
+        fmt::format("{}: is a binary file, not a case file (TOML text)", file.string()));
+  return read_case_string(text, file, overrides);
 }
 
 CaseSpec read_case_string(const std::string& text, const std::filesystem::path& file,
