@@ -32,24 +32,36 @@ std::size_t by_id(const ParticleSet<2>& ps, std::int64_t id) {
   return ps.n_real;
 }
 
+// Two particles at rho0 (p = 0) with different velocities, unequal masses.
+ParticleSet<2> pair_at_rest_density() {
+  ParticleSet<2> ps;
+  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.5, 0.1}}, 0.10, kRho0, kH);
+  ps.add_real(1, Vec<2>{{0.009, 0.004}}, Vec<2>{{-0.3, 0.2}}, 0.12, kRho0, kH);
+  return ps;
+}
+
+// One step of dt with XSPH's eps, continuity preset, open box.
+Simulation<2> one_step(const ParticleSet<2>& ps, double eps, double dt, Integrator integrator) {
+  const auto phys = water();
+  SimulationConfig<2> config;
+  config.fixed_dt = dt;
+  config.xsph = eps;
+  config.integrator = integrator;
+  Simulation<2> sim(ps, test::open_box<2>(-1.0, 1.0),
+                    make_scheme<2>(*preset_rows("continuity"), KernelKind::wendland_c2, phys), phys,
+                    config);
+  sim.step(1.0);
+  return sim;
+}
+
 TEST(XsphW66, LeapFrogStepOfAPairByHand) {
   // Two particles at rho0 (p = 0: no force, so v^{1/2} = v^0 and the first half-kick adds
   // nothing): x^1 = x^0 + dt (v_a + eps m_b / rho_bar (v_b - v_a) W_ab), rho_bar = (rho_a +
   // rho_b)/2 (the continuity density is advanced in the same step: rho^1 = rho0 + dt drho, not
   // yet seen by the drift). Round-off: x ~ 1e-2 m, the XSPH part of the move ~ 1e-8 m.
   const double eps = 0.5, dt = 1e-4;
-  ParticleSet<2> ps;
-  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.5, 0.1}}, 0.10, kRho0, kH);
-  ps.add_real(1, Vec<2>{{0.009, 0.004}}, Vec<2>{{-0.3, 0.2}}, 0.12, kRho0, kH);
-  const auto x0 = ps;
-  const auto phys = water();
-  SimulationConfig<2> config;
-  config.fixed_dt = dt;
-  config.xsph = eps;
-  Simulation<2> sim(ps, test::open_box<2>(-1.0, 1.0),
-                    make_scheme<2>(*preset_rows("continuity"), KernelKind::wendland_c2, phys), phys,
-                    config);
-  sim.step(1.0);
+  const auto x0 = pair_at_rest_density();
+  const Simulation<2> sim = one_step(x0, eps, dt, Integrator::leap_frog);
   const double w = test::wendland_w(norm(x0.x[0] - x0.x[1]), kH);
   for (std::int64_t a = 0; a < 2; ++a) {
     const auto b = 1 - a;
@@ -68,19 +80,8 @@ TEST(XsphW66, MidpointRungeKuttaStepOfAPairByHand) {
   // x^{n+1} = x^n + dt U(x*, u*). The pair starts at rho0 (p = 0, no force), so u* = u^n
   // exactly; the stage's densities rho* = rho0 + (dt/2) drho (BL (4)) enter its rho_bar.
   const double eps = 0.5, dt = 1e-4;
-  ParticleSet<2> ps;
-  ps.add_real(0, Vec<2>{{0.0, 0.0}}, Vec<2>{{0.5, 0.1}}, 0.10, kRho0, kH);
-  ps.add_real(1, Vec<2>{{0.009, 0.004}}, Vec<2>{{-0.3, 0.2}}, 0.12, kRho0, kH);
-  const auto x0 = ps;
-  const auto phys = water();
-  SimulationConfig<2> config;
-  config.fixed_dt = dt;
-  config.xsph = eps;
-  config.integrator = Integrator::runge_kutta;
-  Simulation<2> sim(ps, test::open_box<2>(-1.0, 1.0),
-                    make_scheme<2>(*preset_rows("continuity"), KernelKind::wendland_c2, phys), phys,
-                    config);
-  sim.step(1.0);
+  const auto x0 = pair_at_rest_density();
+  const Simulation<2> sim = one_step(x0, eps, dt, Integrator::runge_kutta);
   auto U = [&](const Vec<2>& xa, const Vec<2>& xb, std::size_t a, double rho_a, double rho_b) {
     const std::size_t b = 1 - a;
     const double w = test::wendland_w(norm(xa - xb), kH);

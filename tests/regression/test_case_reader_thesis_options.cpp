@@ -12,12 +12,7 @@ namespace {
 
 const std::string kValid = test::dam_break_toml("continuity", 10, 0.01);
 
-void expect_one_line_with(const std::string& msg, std::initializer_list<std::string> parts) {
-  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  EXPECT_EQ(msg.rfind("test.toml", 0), 0u) << "must start with the file name: " << msg;
-  for (const auto& p : parts)
-    EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
-}
+using test::expect_one_line_with;
 
 TEST(CaseReaderThesisOptions, DefaultsAndThePresetOfLesSph) {
   auto spec = test::spec_from(kValid);

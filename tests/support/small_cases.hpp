@@ -2,7 +2,9 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
 
 #include "flume/boundaries/box_walls.hpp"
@@ -57,6 +59,15 @@ BoxWalls<D> open_box(double lo, double hi) {
 
 inline CaseSpec spec_from(const std::string& toml, const std::vector<std::string>& sets = {}) {
   return read_case_string(toml, "test.toml", sets);
+}
+
+// An InputError message as the contract wants it: one line, starting with the file name
+// (test.toml), holding every part.
+inline void expect_one_line_with(const std::string& msg, std::initializer_list<std::string> parts) {
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_EQ(msg.rfind("test.toml", 0), 0u) << "must start with the file name: " << msg;
+  for (const auto& p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
 }
 
 // The message of the InputError that reading `toml` (with overrides) throws, or "(no error)".
