@@ -9,10 +9,13 @@ packages=(
   libcli11-dev                            # command line
   libfmt-dev                              # formatting
   nlohmann-json3-dev                      # summary.json, results.json
+  libhdf5-dev                             # checkpoints
   libgtest-dev                            # tests
   libbenchmark-dev                        # benchmarks
   python3 python3-matplotlib              # validation plots
+  python3-h5py python3-vtk9               # tests: the outputs read by h5py and VTK's own readers
   clang-format                            # formatting check
+  clang-14 libfuzzer-14-dev               # the case reader's fuzzer (fuzz/)
 )
 
 missing=()

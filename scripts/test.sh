@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds flume and runs the whole test suite: the GoogleTest suite
 # (Release), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the formatting
-# check, and the quick validation set.
+# check, the case reader's fuzzer for a minute, and the quick validation set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
@@ -19,6 +19,9 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 echo "== formatting (clang-format)"
 files=$(git ls-files '*.cpp' '*.hpp' 2>/dev/null || find src tests bench -name '*.[ch]pp')
 clang-format --dry-run --Werror $files
+
+echo "== fuzzing the case reader and --set (libFuzzer, ASan + UBSan, 60 s)"
+bash scripts/fuzz.sh 60
 
 echo "== quick validation (flume validate --quick)"
 ./build/flume validate --quick --out build/validation-quick

@@ -38,6 +38,26 @@ void check_out_dir(const std::filesystem::path& dir) {
   std::filesystem::remove(probe, ec);
 }
 
+// Exit status of a run (spec/contract.md): 0 completed, 1 failed, 128 + the signal when
+// interrupted (130 SIGINT, 143 SIGTERM), as a shell reports a process ended by it.
+int finish(const std::string& name, const flume::RunResult& result, const flume::RunOptions& opt,
+           bool quiet) {
+  if (result.interrupted) {
+    std::cerr << fmt::format(
+        "flume: {}: interrupted; checkpoint written, continue with `flume "
+        "resume {}`\n",
+        name, opt.out_dir.string());
+    return 128 + result.signal;
+  }
+  if (!result.completed) {
+    std::cerr << fmt::format("flume: {}: simulation failed: {} (output kept in {})\n", name,
+                             result.error, opt.out_dir.string());
+    return 1;
+  }
+  if (!quiet) std::cout << fmt::format("results: {}\n", opt.out_dir.string());
+  return 0;
+}
+
 int cmd_run(const std::string& case_file, const std::string& out,
             const std::vector<std::string>& sets, int threads, bool quiet) {
   const flume::CaseSpec spec = flume::read_case(case_file, sets);
@@ -47,14 +67,18 @@ int cmd_run(const std::string& case_file, const std::string& out,
   check_out_dir(opt.out_dir);
   opt.threads = threads;
   opt.quiet = quiet;
-  const auto result = flume::run_case(spec, opt);
-  if (!result.completed) {
-    std::cerr << fmt::format("flume: {}: simulation failed: {} (output kept in {})\n", spec.name,
-                             result.error, opt.out_dir.string());
-    return 1;
-  }
-  if (!quiet) std::cout << fmt::format("results: {}\n", opt.out_dir.string());
-  return 0;
+  return finish(spec.name, flume::run_case(spec, opt), opt, quiet);
+}
+
+int cmd_resume(const std::string& dir, int threads, bool quiet) {
+  flume::RunOptions opt;
+  opt.out_dir = dir;
+  if (!std::filesystem::is_directory(opt.out_dir))
+    throw flume::InputError(fmt::format("{}: not a run directory", dir));
+  check_out_dir(opt.out_dir);
+  opt.threads = threads;
+  opt.quiet = quiet;
+  return finish(opt.out_dir.filename().string(), flume::resume_run(opt), opt, quiet);
 }
 
 int cmd_cases() {
@@ -84,6 +108,13 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "no progress line and no messages");
+
+  auto* res = app.add_subcommand("resume", "continue a run from its newest valid checkpoint");
+  std::string resume_dir;
+  res->add_option("dir", resume_dir, "run directory (with checkpoints/)")->required();
+  res->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  res->add_flag("--quiet", quiet, "no progress line and no messages");
 
   auto* val = app.add_subcommand("validate", "run validation cases and compare with references");
   flume::ValidateOptions vopt;
@@ -129,6 +160,7 @@ int main(int argc, char** argv) {
 
   try {
     if (run->parsed()) return cmd_run(case_file, out, sets, threads, quiet);
+    if (res->parsed()) return cmd_resume(resume_dir, threads, quiet);
     if (ben->parsed()) {
       bopt.out_dir = bout;
       if (steps_opt->count() > 0) bopt.steps = bsteps;

@@ -266,6 +266,9 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   config.shepard_every = spec.shepard_every;
   config.xsph = spec.xsph;
   config.step_rule = spec.time_step == "w388" ? StepRule::w388 : StepRule::bl63;
+  config.density_band_lo = spec.density_band_lo;
+  config.density_band_hi = spec.density_band_hi;
+  config.min_dt_ratio = spec.min_dt_ratio;
   return Simulation<D>(build_particles<D>(spec, phys), walls, std::move(scheme), phys, config);
 }
 

@@ -389,6 +389,23 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.wall_band = r.positive("probes.wall_band");
   s.detach_gap = r.positive("probes.detach_gap");
 
+  s.checkpoint_every_steps = r.integer("checkpoint.every_steps");
+  if (s.checkpoint_every_steps < 0)
+    r.fail("checkpoint.every_steps", "must be >= 0 (0 = not by steps)");
+  s.checkpoint_every_seconds = r.non_negative("checkpoint.every_seconds");
+  s.checkpoint_keep = static_cast<int>(r.integer("checkpoint.keep"));
+  if (s.checkpoint_keep < 1) r.fail("checkpoint.keep", "must be >= 1");
+  {
+    const auto band = r.numbers("checks.density_band");
+    if (band.size() != 2 || !(band[0] > 0.0 && band[0] < 1.0) || !(band[1] > 1.0))
+      r.fail("checks.density_band", "must be [lo, hi] with 0 < lo < 1 < hi");
+    s.density_band_lo = band[0];
+    s.density_band_hi = band[1];
+  }
+  s.min_dt_ratio = r.num("checks.min_dt_ratio");
+  if (!(s.min_dt_ratio > 0.0 && s.min_dt_ratio < 1.0))
+    r.fail("checks.min_dt_ratio", "must be between 0 and 1 (exclusive)");
+
   s.quick = r.strings("validation.quick");
   s.time_scale = r.positive("validation.time_scale");
   s.notes = r.strings("validation.notes");

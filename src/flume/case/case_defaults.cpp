@@ -105,6 +105,17 @@ wall_band = 2.0        # column height: particles within this many spacings of t
 detach_gap = 3.0       # spacings: particles farther than this from the main body of water are
                        # spray, counted by neither probe
 
+[checkpoint]           # HDF5 checkpoints in checkpoints/ of the run directory (flume resume)
+every_steps = 0        # steps between checkpoints; 0 = not by steps
+every_seconds = 0.0    # wall-clock seconds between checkpoints; 0 = not by time
+keep = 2               # how many of the newest checkpoints are kept (>= 1)
+
+[checks]               # failure detection after every step: a failed check ends the run (exit 1)
+density_band = [0.2, 5.0]  # a density must stay within [lo x the lowest, hi x the highest]
+                       # starting density (0 < lo < 1 < hi)
+min_dt_ratio = 1e-4    # the step may not collapse below this fraction of the first step
+                       # (0 < ratio < 1)
+
 [validation]
 quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (validate --quick)
 time_scale = 1.0       # s; the references' time is t / time_scale

@@ -193,8 +193,8 @@ void apply_override(toml::table& user, const toml::table& defaults, const std::s
                     const std::string& file, int dim) {
   const auto eq = item.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError(
-        fmt::format("--set '{}': expected KEY=VALUE, e.g. particles.spacing=0.001", item));
+    throw InputError(fmt::format("{}: --set '{}': expected KEY=VALUE, e.g. particles.spacing=0.001",
+                                 file, item));
   const std::string key = item.substr(0, eq);
   const toml::table parsed = parse_override_value(item.substr(eq + 1));
   const toml::node& value = *parsed.get("v");

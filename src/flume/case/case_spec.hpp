@@ -136,6 +136,16 @@ struct CaseSpec {
   double wall_band = 2.0;    // spacings
   double detach_gap = 3.0;   // spacings
 
+  // [checkpoint] (run/checkpoint.hpp)
+  long checkpoint_every_steps = 0;      // steps between checkpoints; 0 = not by steps
+  double checkpoint_every_seconds = 0;  // wall-clock s between checkpoints; 0 = not by time
+  int checkpoint_keep = 2;              // the newest checkpoints kept
+
+  // [checks] (sim/simulation.hpp): failure detection in every step
+  double density_band_lo = 0.2;  // times the lowest starting density
+  double density_band_hi = 5.0;  // times the highest starting density
+  double min_dt_ratio = 1e-4;    // the smallest step allowed, times the first step
+
   // [validation]
   std::vector<std::string> quick;     // KEY=VALUE overrides of the reduced-resolution run
   double time_scale = 1.0;            // s: reference time = t / time_scale

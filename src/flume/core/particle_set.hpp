@@ -77,18 +77,24 @@ struct ParticleSet {
   std::size_t size() const { return x.size(); }
   bool uses(unsigned field) const { return (optional & field) != 0; }
 
-  // Applies f to every state array in use: re-ordering must never forget one. Add a new field
-  // above and here, nowhere else.
+  // Applies f(name, unit, array) to every state array in use, named as in the checkpoints
+  // (run/checkpoint.hpp): re-ordering and checkpoints must never forget one. Add a new field
+  // above and here (or in the optional list below), nowhere else.
+  template <class F>
+  void for_each_named_state_field(F&& f) {
+    f("id", "-", id);
+    f("x", "m", x);
+    f("v", "m/s", v);
+    f("m", "kg", m);
+    f("rho", "kg/m^3", rho);
+    f("h", "m", h);
+    f("v_half", "m/s", v_half);
+    for_each_named_optional_state_field(optional, f);
+  }
+  // Applies f to every state array in use.
   template <class F>
   void for_each_state_field(F&& f) {
-    f(id);
-    f(x);
-    f(v);
-    f(m);
-    f(rho);
-    f(h);
-    f(v_half);
-    for_each_optional_state_field(optional, f);
+    for_each_named_state_field([&f](const char*, const char*, auto& field) { f(field); });
   }
   // Applies f to every derived array in use.
   template <class F>
@@ -98,17 +104,23 @@ struct ParticleSet {
     f(a);
     for_each_optional_derived_field(optional, f);
   }
-  // The optional state arrays of the fields in `bits`.
+  // The optional state arrays of the fields in `bits`, with their names and units (e_start
+  // needs both of its bits).
+  template <class F>
+  void for_each_named_optional_state_field(unsigned bits, F&& f) {
+    if (bits & kFieldEnergy) f("e", "J/kg", e);
+    if (bits & kFieldStepStart) {
+      f("x_start", "m", x_start);
+      f("v_start", "m/s", v_start);
+      f("rho_start", "kg/m^3", rho_start);
+      f("h_start", "m", h_start);
+      if (bits & kFieldEnergy) f("e_start", "J/kg", e_start);
+    }
+  }
   template <class F>
   void for_each_optional_state_field(unsigned bits, F&& f) {
-    if (bits & kFieldEnergy) f(e);
-    if (bits & kFieldStepStart) {
-      f(x_start);
-      f(v_start);
-      f(rho_start);
-      f(h_start);
-      if (bits & kFieldEnergy) f(e_start);
-    }
+    for_each_named_optional_state_field(bits,
+                                        [&f](const char*, const char*, auto& field) { f(field); });
   }
   // The optional derived arrays of the fields in `bits`.
   template <class F>

@@ -123,6 +123,16 @@ class LeapFrog {
     return f.data()->c.data();
   }
 
+  // dt^n, the step before the one about to be taken (what a checkpoint keeps).
+ public:
+  double history() const {
+    return dt_prev_;
+  }
+  void set_history(double dt_prev) {
+    dt_prev_ = dt_prev;
+  }
+
+ private:
   double dt_prev_ = 0.0;
 };
 

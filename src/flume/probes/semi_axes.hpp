@@ -37,6 +37,16 @@ class SemiAxesProbe {
   }
 
  private:
+  // The reference moments (a checkpoint's probe_state): empty before the first call.
+ public:
+  std::vector<double> state() const {
+    return start_ ? std::vector<double>{(*start_)[0], (*start_)[1]} : std::vector<double>{};
+  }
+  void restore(const std::vector<double>& s) {
+    if (s.size() == 2) start_ = std::array<double, 2>{s[0], s[1]};
+  }
+
+ private:
   std::array<double, 2> nominal_;
   std::optional<std::array<double, 2>> start_;
 };

@@ -1,6 +1,7 @@
 // Running a case to its end time and writing its run directory (spec/contract.md): case.toml,
 // diagnostics.csv, probes.csv, snapshots/ (.pvd + .vtu), summary.json, log.txt, each written
 // atomically. A failed simulation keeps everything written so far and says why in summary.json.
+// Checkpoints (run/checkpoint.hpp) as the case's [checkpoint] asks, and on SIGINT / SIGTERM.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +20,9 @@ struct RunOptions {
 
 struct RunResult {
   bool completed = false;
-  std::string error;  // empty when completed
+  bool interrupted = false;  // by SIGINT or SIGTERM (signal): a checkpoint was written
+  int signal = 0;
+  std::string error;  // empty when completed or interrupted
   std::size_t particles = 0;
   long steps = 0;
   double simulated_time = 0.0;
@@ -30,5 +33,10 @@ struct RunResult {
 
 // Runs the case; never throws for a failed simulation (see RunResult), only for I/O errors.
 RunResult run_case(const CaseSpec& spec, const RunOptions& options);
+
+// Continues the run in options.out_dir from its newest checkpoint that reads back whole (each
+// one that does not is named in a line of the log, with why); the rest of the run is
+// bit-identical to one never interrupted. Throws InputError when there is none.
+RunResult resume_run(const RunOptions& options);
 
 }  // namespace flume

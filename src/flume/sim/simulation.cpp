@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <string>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -42,6 +45,47 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
                (config_.integrator == Integrator::leap_frog ? 0u : RungeKutta<D>::fields()));
   // The pressure of the starting density, so that the state written before the first step
   // (snapshot 0) shows it; every step recomputes it.
+  for (std::size_t i = 0; i < ps_.n_real; ++i)
+    ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
+  // The density band, from the starting densities (a gas's two sides differ by 8).
+  if (ps_.n_real > 0) {
+    const auto [lo, hi] = std::minmax_element(ps_.rho.begin(), ps_.rho.begin() + ps_.n_real);
+    rho_lo_ = config_.density_band_lo * *lo;
+    rho_hi_ = config_.density_band_hi * *hi;
+  }
+  walls_.set_time(time_);
+  check_state();
+}
+
+template <int D>
+SimulationState Simulation<D>::state() const {
+  return {time_, steps_, last_dt_, first_dt_, integrator_.history()};
+}
+
+template <int D>
+void Simulation<D>::restore(const ParticleSet<D>& particles, const SimulationState& state) {
+  if (particles.optional != ps_.optional)
+    throw SimulationError(
+        fmt::format("the saved particles carry the fields {:#x}, this case's scheme {:#x}",
+                    particles.optional, ps_.optional));
+  ps_.drop_ghosts();
+  ParticleSet<D> in = particles;
+  ps_.n_real = in.n_real;
+  ps_.resize(in.n_real);  // every field, derived ones too, sized for the saved count
+  // Field by field: both sets carry the same fields, so the one list
+  // (ParticleSet::for_each_named_state_field) visits the same arrays, of the same types, in the
+  // same order.
+  std::vector<const void*> sources;
+  in.for_each_state_field([&](auto& field) { sources.push_back(&field); });
+  std::size_t k = 0;
+  ps_.for_each_state_field([&](auto& field) {
+    field = *static_cast<const std::decay_t<decltype(field)>*>(sources[k++]);
+  });
+  time_ = state.time;
+  steps_ = static_cast<long>(state.steps);
+  last_dt_ = state.last_dt;
+  first_dt_ = state.first_dt;
+  integrator_.set_history(state.leapfrog_dt_prev);
   for (std::size_t i = 0; i < ps_.n_real; ++i)
     ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
   walls_.set_time(time_);
@@ -87,11 +131,19 @@ double Simulation<D>::choose_step(double dt_stable, double max_dt) {
   if (steps_ == 0) first_dt_ = dt_rule;
   // A CFL step that shrinks by four orders of magnitude means particles are flying apart or
   // accelerating without bound: stop and say so instead of crawling on.
-  if (!(dt_rule > 1e-4 * first_dt_) || !std::isfinite(dt_rule))
-    throw SimulationError(
-        fmt::format("time step collapsed to {:.3g} s (first step {:.3g} s) at "
-                    "t = {:.6g} s, step {}: the simulation blew up",
-                    dt_rule, first_dt_, time_, steps_));
+  if (!(dt_rule > config_.min_dt_ratio * first_dt_) || !std::isfinite(dt_rule)) {
+    // The particle that sets the step: the largest acceleration (the force limit of BL (63)).
+    std::size_t worst = 0;
+    for (std::size_t i = 1; i < ps_.n_real; ++i)
+      if (!(norm(ps_.a[i]) <= norm(ps_.a[worst]))) worst = i;
+    throw SimulationError(fmt::format(
+        "check time_step failed at step {}, t = {:.6g} s: the step collapsed to {:.3g} s, below "
+        "{:g} times the first ({:.3g} s, checks.min_dt_ratio); {} has the largest acceleration, "
+        "{:.3g} m/s^2: the simulation blew up",
+        steps_, time_, dt_rule, config_.min_dt_ratio, first_dt_,
+        ps_.n_real ? particle_at(worst) : std::string("no particle"),
+        ps_.n_real ? norm(ps_.a[worst]) : 0.0));
+  }
   return std::min(dt_rule, max_dt);
 }
 
@@ -141,14 +193,14 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   phase.emplace(&clock_, "integration");
   const double dt = choose_step(dt_stable, max_dt);
   // The drift moves the particles to t^{n+1}; in the same pass each is put back across the
-  // walls (standing where they are at t^{n+1}) and checked: the first bad one is reported.
+  // walls (standing where they are at t^{n+1}). The checks follow in a pass of their own (its
+  // cost is a phase of flume bench): the first bad particle is reported.
   walls_.set_time(time_ + dt);
   const long none = static_cast<long>(ps_.n_real);
-  auto put_back_and_check = [&](std::size_t b, std::size_t e) {
+  auto put_back = [&](std::size_t b, std::size_t e) {
     walls_.put_back(ps_, b, e, range);
-    return first_unsound(b, e);
+    return none;
   };
-  long bad = none;
   const EvolvedFields state = evolved();
   const bool xsph = config_.xsph > 0.0;
   if (state.density || state.energy || state.smoothing_length || xsph) {
@@ -158,11 +210,12 @@ void Simulation<D>::step_leap_frog(double max_dt) {
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v_half);
     const std::vector<Vec<D>>* drift = xsph_of(ctx, ps_.v_half);
     phase.emplace(&clock_, "integration");
-    bad = integrator_.advance_state_and_drift(ps_, dt, state, none, put_back_and_check, drift);
+    integrator_.advance_state_and_drift(ps_, dt, state, none, put_back, drift);
   } else {
-    bad = integrator_.kick_and_drift(ps_, dt, none, put_back_and_check);
+    integrator_.kick_and_drift(ps_, dt, none, put_back);
   }
-  finish_step(dt, bad);
+  phase.reset();
+  finish_step(dt, first_unsound_of_all());
 }
 
 // W (3.85)-(3.87) or W (3.92) (runge_kutta.hpp): the rates at Phi^n, a stage, the rates at
@@ -185,9 +238,9 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
     const bool stage_of_modified = !stable && kind == RungeKuttaKind::modified;
     return xsph_of(ctx, stage_of_modified ? ps_.v_half : ps_.v);
   };
-  auto put_back_and_check = [&](std::size_t b, std::size_t e) {
+  auto put_back = [&](std::size_t b, std::size_t e) {
     walls_.put_back(ps_, b, e, range);
-    return first_unsound(b, e);
+    return none;
   };
 
   double dt_stable = 0.0;
@@ -197,8 +250,10 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   const double dt = choose_step(dt_stable, max_dt);
   // The stage state stands at t + dt/2 (W (3.85); W (3.92)'s Phi^{n+1/2}).
   walls_.set_time(time_ + 0.5 * dt);
-  long bad = rk.to_stage(ps_, dt, none, put_back_and_check, drift);
+  rk.to_stage(ps_, dt, none, put_back, drift);
   ps_.drop_ghosts();
+  phase.reset();
+  const long bad = first_unsound_of_all();
   if (bad < none) {
     finish_step(0.5 * dt, bad);  // reports the particle, at the stage's time
     return;
@@ -208,8 +263,9 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   drift = rates(nullptr);
   phase.emplace(&clock_, "integration");
   walls_.set_time(time_ + dt);
-  bad = rk.to_end(ps_, dt, none, put_back_and_check, drift);
-  finish_step(dt, bad);
+  rk.to_end(ps_, dt, none, put_back, drift);
+  phase.reset();
+  finish_step(dt, first_unsound_of_all());
 }
 
 template <int D>
@@ -232,8 +288,15 @@ std::size_t Simulation<D>::bytes() const {
 }
 
 template <int D>
-void Simulation<D>::check_state() const {
+long Simulation<D>::first_unsound_of_all() {
+  PhaseClock::Scope phase(&clock_, "checks");
   // The first bad particle (lowest index), found in parallel.
+  return least_over_blocks(ps_.n_real, static_cast<long>(ps_.n_real),
+                           [&](std::size_t b, std::size_t e) { return first_unsound(b, e); });
+}
+
+template <int D>
+void Simulation<D>::check_state() const {
   const long none = static_cast<long>(ps_.n_real);
   const long bad = least_over_blocks(
       ps_.n_real, none, [&](std::size_t b, std::size_t e) { return first_unsound(b, e); });
@@ -241,26 +304,44 @@ void Simulation<D>::check_state() const {
 }
 
 template <int D>
+std::string Simulation<D>::particle_at(std::size_t i) const {
+  std::string pos;
+  for (int k = 0; k < D; ++k)
+    pos += fmt::format("{}{:.6g}", k ? ", " : "", ps_.x[i][k]);
+  return fmt::format("particle {} at ({}) m", ps_.id[i], pos);
+}
+
+template <int D>
 void Simulation<D>::report(std::size_t i) const {
+  const std::string when = fmt::format("step {}, t = {:.6g} s", steps_, time_);
   bool finite = std::isfinite(ps_.rho[i]) && (!ps_.uses(kFieldEnergy) || std::isfinite(ps_.e[i]));
   for (int k = 0; k < D; ++k)
     finite = finite && std::isfinite(ps_.x[i][k]) && std::isfinite(ps_.v[i][k]);
   if (!finite)
     throw SimulationError(
-        fmt::format("non-finite state (NaN or infinity) of particle {} at t = {:.6g} s, step {}",
-                    ps_.id[i], time_, steps_));
-  if (!(ps_.rho[i] > 0.0))
-    throw SimulationError(
-        fmt::format("density of particle {} fell to {:.4g} kg/m^3 at t = "
-                    "{:.6g} s, step {}: the simulation blew up",
-                    ps_.id[i], ps_.rho[i], time_, steps_));
-  std::string pos;
-  for (int k = 0; k < D; ++k)
-    pos += fmt::format("{}{:.6g}", k ? ", " : "", ps_.x[i][k]);
-  throw SimulationError(
-      fmt::format("particle {} lost: it left the domain at ({}) m, t = {:.6g} "
-                  "s, step {}",
-                  ps_.id[i], pos, time_, steps_));
+        fmt::format("check finite failed at {}: {} has a NaN or infinite state: the "
+                    "simulation blew up",
+                    when, particle_at(i)));
+  if (!(ps_.rho[i] > rho_lo_ && ps_.rho[i] < rho_hi_)) {
+    // The worst of the band's offenders: the largest factor outside it.
+    std::size_t worst = i;
+    double worst_factor = 0.0;
+    for (std::size_t j = 0; j < ps_.n_real; ++j) {
+      const double r = ps_.rho[j];
+      const double factor =
+          r <= 0.0 ? std::numeric_limits<double>::infinity() : std::max(rho_lo_ / r, r / rho_hi_);
+      if (factor > worst_factor) {
+        worst_factor = factor;
+        worst = j;
+      }
+    }
+    throw SimulationError(fmt::format(
+        "check density_band failed at {}: {} has density {:.4g} kg/m^3, outside [{:.4g}, {:.4g}] "
+        "(checks.density_band): the simulation blew up",
+        when, particle_at(worst), ps_.rho[worst], rho_lo_, rho_hi_));
+  }
+  throw SimulationError(fmt::format("check inside failed at {}: {} left the domain (particle lost)",
+                                    when, particle_at(i)));
 }
 
 template void sort_state<2>(ParticleSet<2>&, const std::vector<std::uint32_t>&, SweepWorkspace&);

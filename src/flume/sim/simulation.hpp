@@ -6,7 +6,9 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <string>
 
 #include "flume/boundaries/box_walls.hpp"
 #include "flume/integrators/leapfrog.hpp"
@@ -15,6 +17,7 @@
 #include "flume/schemes/scheme.hpp"
 #include "flume/schemes/sweep_workspace.hpp"
 #include "flume/sim/phase_clock.hpp"
+#include "flume/sim/simulation_state.hpp"
 
 namespace flume {
 
@@ -29,6 +32,10 @@ struct SimulationConfig {
   int shepard_every = 0;                // steps between Shepard density filters W (6.3); 0 = never
   double xsph = 0.0;                    // XSPH's eps, W (6.6); 0 = off
   StepRule step_rule = StepRule::bl63;  // BL (63) or W (3.88)-(3.90) (time_step.hpp)
+  // The failure checks of every step: a density outside [lo, hi] times the lowest and highest
+  // starting density, a step below min_dt_ratio times the first one.
+  double density_band_lo = 0.0, density_band_hi = std::numeric_limits<double>::infinity();
+  double min_dt_ratio = 1e-4;
 };
 
 template <int D>
@@ -37,9 +44,17 @@ class Simulation {
   Simulation(ParticleSet<D> particles, BoxWalls<D> walls, std::unique_ptr<Scheme<D>> scheme,
              Physics<D> physics, SimulationConfig<D> config);
 
-  // Advances one step, never beyond max_dt. Throws SimulationError on NaN, non-positive density
-  // or a particle leaving the domain; the state is then that of the failed step.
+  // Advances one step, never beyond max_dt. Throws SimulationError when a check fails (a
+  // non-finite value, a density outside the band, a particle leaving the domain, the step
+  // collapsing); the state is then that of the failed step.
   void step(double max_dt);
+
+  // What a checkpoint holds (run/checkpoint.hpp): the clock and the integrator's memory, and
+  // the particles' state fields. restore() takes them back (the particles' fields must be
+  // those this simulation's scheme uses) and checks the state; the next step is then the one
+  // the saved run took.
+  SimulationState state() const;
+  void restore(const ParticleSet<D>& particles, const SimulationState& state);
 
   double time() const { return time_; }
   long steps() const { return steps_; }
@@ -76,8 +91,8 @@ class Simulation {
             scheme_->evolves_smoothing_length()};
   }
   // The first of the real particles [b, e) that is not sound (a non-finite state, a density
-  // <= 0, outside the box), or n_real if none. Without branches on the particle: the loop
-  // vectorises.
+  // outside the band, outside the box), or n_real if none. Without branches on the particle:
+  // the loop vectorises.
   long first_unsound(std::size_t b, std::size_t e) const {
     const long none = static_cast<long>(ps_.n_real);
     long first = none;
@@ -85,7 +100,8 @@ class Simulation {
     const double* energy = ps_.uses(kFieldEnergy) ? ps_.e.data() : ps_.rho.data();
 #pragma omp simd reduction(min : first)
     for (std::size_t i = b; i < e; ++i) {
-      bool ok = std::isfinite(ps_.rho[i]) & (ps_.rho[i] > 0.0) & std::isfinite(energy[i]);
+      bool ok = std::isfinite(ps_.rho[i]) & (ps_.rho[i] > rho_lo_) & (ps_.rho[i] < rho_hi_) &
+                std::isfinite(energy[i]);
       for (int k = 0; k < D; ++k)
         ok = ok & std::isfinite(ps_.x[i][k]) & std::isfinite(ps_.v[i][k]);
       ok = ok & walls_.inside(ps_, i);
@@ -93,10 +109,15 @@ class Simulation {
     }
     return first;
   }
+  // The first real particle that is not sound, or n_real: the "checks" phase of every step.
+  long first_unsound_of_all();
   // Throws SimulationError if a real particle is not sound (the first one, by index).
   void check_state() const;
-  // Throws the SimulationError that says what is wrong with particle i.
+  // Throws the SimulationError that says which check particle i failed; for the density band
+  // it names the particle farthest outside it.
   [[noreturn]] void report(std::size_t i) const;
+  // " particle <id> at (x, y[, z]) m"
+  std::string particle_at(std::size_t i) const;
 
   ParticleSet<D> ps_;
   BoxWalls<D> walls_;
@@ -114,6 +135,7 @@ class Simulation {
   double first_dt_ = 0.0;   // the step rule's first value, s
   double uniform_h_ = 0.0;  // the common smoothing length of this step's particles, or 0
   long steps_ = 0;
+  double rho_lo_ = 0.0, rho_hi_ = 0.0;  // the density band, kg/m^3 (from the starting state)
   PhaseClock clock_;
 };
 
