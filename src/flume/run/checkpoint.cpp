@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
-#include <regex>
+#include <string_view>
 #include <system_error>
 
 #include "flume/io/hdf5_file.hpp"
@@ -188,12 +188,20 @@ std::vector<std::filesystem::path> list_checkpoints(const std::filesystem::path&
   std::error_code ec;
   const auto dir = run_dir / "checkpoints";
   if (!std::filesystem::is_directory(dir, ec)) return {};
-  static const std::regex name(R"(checkpoint_(\d{10})\.h5)");
+  // checkpoint_<10 digits>.h5, as checkpoint_path writes them.
+  const auto step_of = [](const std::string& file) -> long long {
+    constexpr std::string_view kHead = "checkpoint_", kTail = ".h5";
+    if (file.size() != kHead.size() + 10 + kTail.size() || !file.starts_with(kHead) ||
+        !file.ends_with(kTail))
+      return -1;
+    const std::string digits = file.substr(kHead.size(), 10);
+    if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return -1;
+    return std::stoll(digits);
+  };
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    std::smatch m;
-    const std::string file = entry.path().filename().string();
-    if (entry.is_regular_file(ec) && std::regex_match(file, m, name))
-      found.emplace_back(std::stoll(m[1].str()), entry.path());
+    const long long step = step_of(entry.path().filename().string());
+    if (step >= 0 && entry.is_regular_file(ec)) found.emplace_back(step, entry.path());
   }
   std::sort(found.begin(), found.end());
   std::vector<std::filesystem::path> paths;
