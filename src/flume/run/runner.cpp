@@ -25,6 +25,7 @@
 #include "flume/run/profile.hpp"
 #include "flume/run/run_output.hpp"
 #include "flume/sim/diagnostics.hpp"
+#include "flume/sim/state_fields.hpp"
 
 namespace flume {
 
@@ -154,13 +155,7 @@ ParticleSet<D> state_of(const ParticleSet<D>& ps) {
   ParticleSet<D> out;
   out.optional = ps.optional;
   out.n_real = ps.n_real;
-  std::vector<const void*> sources;
-  const_cast<ParticleSet<D>&>(ps).for_each_state_field([&](auto& f) { sources.push_back(&f); });
-  std::size_t k = 0;
-  out.for_each_state_field([&](auto& f) {
-    const auto& in = *static_cast<const std::decay_t<decltype(f)>*>(sources[k++]);
-    f.assign(in.begin(), in.begin() + static_cast<long>(ps.n_real));
-  });
+  copy_state_fields(ps, out, ps.n_real);
   return out;
 }
 

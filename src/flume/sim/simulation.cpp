@@ -11,6 +11,7 @@
 
 #include "flume/core/error.hpp"
 #include "flume/integrators/time_step.hpp"
+#include "flume/sim/state_fields.hpp"
 
 namespace flume {
 
@@ -69,18 +70,9 @@ void Simulation<D>::restore(const ParticleSet<D>& particles, const SimulationSta
         fmt::format("the saved particles carry the fields {:#x}, this case's scheme {:#x}",
                     particles.optional, ps_.optional));
   ps_.drop_ghosts();
-  ParticleSet<D> in = particles;
-  ps_.n_real = in.n_real;
-  ps_.resize(in.n_real);  // every field, derived ones too, sized for the saved count
-  // Field by field: both sets carry the same fields, so the one list
-  // (ParticleSet::for_each_named_state_field) visits the same arrays, of the same types, in the
-  // same order.
-  std::vector<const void*> sources;
-  in.for_each_state_field([&](auto& field) { sources.push_back(&field); });
-  std::size_t k = 0;
-  ps_.for_each_state_field([&](auto& field) {
-    field = *static_cast<const std::decay_t<decltype(field)>*>(sources[k++]);
-  });
+  ps_.n_real = particles.n_real;
+  ps_.resize(particles.n_real);  // every field, derived ones too, sized for the saved count
+  copy_state_fields(particles, ps_, particles.n_real);
   time_ = state.time;
   steps_ = static_cast<long>(state.steps);
   last_dt_ = state.last_dt;
@@ -215,7 +207,7 @@ void Simulation<D>::step_leap_frog(double max_dt) {
     integrator_.kick_and_drift(ps_, dt, none, put_back);
   }
   phase.reset();
-  finish_step(dt, first_unsound_of_all());
+  finish_step(dt, checked());
 }
 
 // W (3.85)-(3.87) or W (3.92) (runge_kutta.hpp): the rates at Phi^n, a stage, the rates at
@@ -253,7 +245,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   rk.to_stage(ps_, dt, none, put_back, drift);
   ps_.drop_ghosts();
   phase.reset();
-  const long bad = first_unsound_of_all();
+  const long bad = checked();
   if (bad < none) {
     finish_step(0.5 * dt, bad);  // reports the particle, at the stage's time
     return;
@@ -265,7 +257,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   walls_.set_time(time_ + dt);
   rk.to_end(ps_, dt, none, put_back, drift);
   phase.reset();
-  finish_step(dt, first_unsound_of_all());
+  finish_step(dt, checked());
 }
 
 template <int D>
@@ -288,19 +280,22 @@ std::size_t Simulation<D>::bytes() const {
 }
 
 template <int D>
-long Simulation<D>::first_unsound_of_all() {
-  PhaseClock::Scope phase(&clock_, "checks");
+long Simulation<D>::first_unsound_of_all() const {
   // The first bad particle (lowest index), found in parallel.
   return least_over_blocks(ps_.n_real, static_cast<long>(ps_.n_real),
                            [&](std::size_t b, std::size_t e) { return first_unsound(b, e); });
 }
 
 template <int D>
+long Simulation<D>::checked() {
+  PhaseClock::Scope phase(&clock_, "checks");
+  return first_unsound_of_all();
+}
+
+template <int D>
 void Simulation<D>::check_state() const {
-  const long none = static_cast<long>(ps_.n_real);
-  const long bad = least_over_blocks(
-      ps_.n_real, none, [&](std::size_t b, std::size_t e) { return first_unsound(b, e); });
-  if (bad < none) report(static_cast<std::size_t>(bad));
+  const long bad = first_unsound_of_all();
+  if (bad < static_cast<long>(ps_.n_real)) report(static_cast<std::size_t>(bad));
 }
 
 template <int D>

@@ -109,8 +109,10 @@ class Simulation {
     }
     return first;
   }
-  // The first real particle that is not sound, or n_real: the "checks" phase of every step.
-  long first_unsound_of_all();
+  // The first real particle that is not sound, or n_real; checked() is that as the "checks"
+  // phase of every step.
+  long first_unsound_of_all() const;
+  long checked();
   // Throws SimulationError if a real particle is not sound (the first one, by index).
   void check_state() const;
   // Throws the SimulationError that says which check particle i failed; for the density band
