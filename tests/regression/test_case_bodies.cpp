@@ -146,7 +146,7 @@ TEST(CaseBodies, BadBodiesAreOneLineErrors) {
 TEST(CaseBodies, TheoryReferenceIsTheExactDropSolution) {
   const std::string curve = std::string("[probes]\nsemi_axes = true\n") + kSemiAxisCurve;
   const auto spec = test::spec_from(drop_toml("", curve));
-  const auto ref = curve_reference(spec, spec.curves.front());
+  const auto ref = curve_reference(spec, spec.curves.front(), {});
   const auto t = ref.column("t"), a = ref.column("a"), b = ref.column("b");
   ASSERT_EQ(t.size(), 40u);
   EXPECT_DOUBLE_EQ(t.back(), 0.008);
@@ -158,7 +158,7 @@ TEST(CaseBodies, TheoryReferenceIsTheExactDropSolution) {
   std::string oval = drop_toml("", curve);
   oval.replace(oval.find("max = [1.0, 1.0]"), 16, "max = [1.0, 1.5]");
   const auto bad = test::spec_from(oval);
-  EXPECT_THROW(curve_reference(bad, bad.curves.front()), InputError);
+  EXPECT_THROW(curve_reference(bad, bad.curves.front(), {}), InputError);
 }
 
 }  // namespace

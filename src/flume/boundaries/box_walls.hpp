@@ -9,6 +9,11 @@
 // -v_n + 2 u_w (the wall's velocity is normal to it, so free slip leaves the tangential
 // component alone and no slip reverses it about zero). A fluid moving with the wall then sees
 // ghosts moving with it too. set_time() places the walls; every other member uses those places.
+// A periodic axis (W 6.1) joins its two ends: the ghosts of the particles near one end are
+// their copies shifted by the box's length to beyond the other end, velocities unchanged, and a
+// particle that steps out of one end re-enters at the other (re-injection). W 6.4.2 forms its
+// wave in a closed tank and joins the ends once it has formed: before periodic_from the two
+// sides are free-slip mirror walls.
 #pragma once
 
 #include <algorithm>
@@ -26,13 +31,14 @@
 
 namespace flume {
 
-enum class WallKind { free_slip, no_slip, open };
+enum class WallKind { free_slip, no_slip, open, periodic };
 
 template <int D>
 struct BoxWalls {
   Vec<D> lo, hi;                                      // box corners at t = 0, m
   std::array<std::array<WallKind, 2>, D> kind{};      // [axis][0 = lower side, 1 = upper side]
   std::array<std::array<WallMotion, 2>, D> motion{};  // [axis][side]; none by default
+  double periodic_from = 0.0;  // s: before it, periodic sides act as free-slip walls
 
   // Places the moving walls where they stand at time t (s).
   void set_time(double t) {
@@ -42,8 +48,16 @@ struct BoxWalls {
         place_[k][side] = rest + motion[k][side].displacement(t);
         speed_[k][side] = motion[k][side].speed(t);
       }
+    periodic_on_ = t >= periodic_from;
     placed_ = true;
   }
+  // What the side of axis k acts as now: its kind, except a periodic side before
+  // periodic_from, which is a free-slip wall.
+  WallKind acts_as(int k, int side) const {
+    const WallKind w = kind[k][side];
+    return w == WallKind::periodic && !periodic_now() ? WallKind::free_slip : w;
+  }
+  bool periodic_now() const { return placed_ ? periodic_on_ : periodic_from <= 0.0; }
   // Where the wall on `side` of axis k stands now, m, and its velocity along k, m/s.
   double wall(int k, int side) const {
     return placed_ ? place_[k][side] : (side == 0 ? lo[k] : hi[k]);
@@ -55,8 +69,8 @@ struct BoxWalls {
   void clear_of_walls(double range, Vec<D>& inner_lo, Vec<D>& inner_hi) const {
     const double inf = std::numeric_limits<double>::infinity();
     for (int k = 0; k < D; ++k) {
-      inner_lo[k] = kind[k][0] == WallKind::open ? -inf : wall(k, 0) + range;
-      inner_hi[k] = kind[k][1] == WallKind::open ? inf : wall(k, 1) - range;
+      inner_lo[k] = acts_as(k, 0) == WallKind::open ? -inf : wall(k, 0) + range;
+      inner_hi[k] = acts_as(k, 1) == WallKind::open ? inf : wall(k, 1) - range;
     }
   }
 
@@ -87,8 +101,8 @@ struct BoxWalls {
     bool any = false;
     for (int k = 0; k < D; ++k) {
       near[k] = 0;
-      if (kind[k][0] != WallKind::open && x[k] - wall(k, 0) < range) near[k] |= 1;
-      if (kind[k][1] != WallKind::open && wall(k, 1) - x[k] < range) near[k] |= 2;
+      if (acts_as(k, 0) != WallKind::open && x[k] - wall(k, 0) < range) near[k] |= 1;
+      if (acts_as(k, 1) != WallKind::open && wall(k, 1) - x[k] < range) near[k] |= 2;
       any = any || near[k] != 0;
     }
     if (!any) return 0;
@@ -115,9 +129,14 @@ struct BoxWalls {
       for (int a = 0; a < D; ++a) {
         if (choice[a] == 0) continue;
         const int side = choice[a] - 1;
+        if (acts_as(a, side) == WallKind::periodic) {
+          // The copy beyond the other end: shifted by the box's length, velocity as it is.
+          g.shift[a] = (side == 0 ? 1.0 : -1.0) * (hi[a] - lo[a]);
+          continue;
+        }
         g.scale[a] = -1.0;
         g.shift[a] = 2.0 * wall(a, side);
-        if (kind[a][side] == WallKind::no_slip) {
+        if (acts_as(a, side) == WallKind::no_slip) {
           for (int b = 0; b < D; ++b) {
             g.vscale[b] = -g.vscale[b];
             g.vshift[b] = -g.vshift[b];
@@ -213,8 +232,19 @@ struct BoxWalls {
   // indexes fixed components and vectorises).
   template <int K, int Side>
   void put_back_at(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
-    const WallKind w = kind[K][Side];
+    const WallKind w = acts_as(K, Side);
     if (w == WallKind::open) return;
+    if (w == WallKind::periodic) {
+      // Re-injection (W 6.1): out of one end, in at the other, r + (x_i - l).
+      const double at = wall(K, Side), length = hi[K] - lo[K];
+      Vec<D>* __restrict x = ps.x.data();
+#pragma omp simd
+      for (std::size_t i = b; i < e; ++i) {
+        const bool out = Side == 0 ? x[i][K] < at : x[i][K] > at;
+        x[i][K] = out ? x[i][K] + (Side == 0 ? length : -length) : x[i][K];
+      }
+      return;
+    }
     const double at = wall(K, Side);
     const double u2 = 2.0 * wall_speed(K, Side);
     const bool no_slip = w == WallKind::no_slip;  // all components mirrored, else the normal one
@@ -237,7 +267,8 @@ struct BoxWalls {
   }
 
   std::array<std::array<double, 2>, D> place_{}, speed_{};
-  bool placed_ = false;  // before set_time() the walls stand at lo, hi
+  bool placed_ = false;       // before set_time() the walls stand at lo, hi
+  bool periodic_on_ = false;  // set_time's t >= periodic_from
 };
 
 }  // namespace flume

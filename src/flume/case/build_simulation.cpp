@@ -26,6 +26,7 @@ Vec<D> to_vec(const std::vector<double>& v) {
 WallKind wall_kind(const std::string& s) {
   if (s == "no_slip") return WallKind::no_slip;
   if (s == "open") return WallKind::open;
+  if (s == "periodic") return WallKind::periodic;
   return WallKind::free_slip;
 }
 }  // namespace
@@ -53,10 +54,21 @@ Physics<D> build_physics(const CaseSpec& spec) {
 
 namespace {
 
-// Whether x lies inside the block's shape (the box itself, or the ellipsoid inscribed in it).
+// The height of the block's free surface above x: its top, or W (6.21)'s mound on it,
+// y = max_y + B exp(-k d), d the distance along x from the side the mound stands at.
+template <int D>
+double surface_top(const FluidBlock& block, const Vec<D>& x) {
+  const double top = block.max[D - 1];
+  if (!(block.surface_amplitude > 0.0)) return top;
+  const double d = block.surface_from == 0 ? x[0] - block.min[0] : block.max[0] - x[0];
+  return top + block.surface_amplitude * std::exp(-block.surface_decay * d);
+}
+
+// Whether x lies inside the block's shape (the box itself, below its surface, or the ellipsoid
+// inscribed in it).
 template <int D>
 bool inside(const FluidBlock& block, const Vec<D>& x) {
-  if (block.shape == "box") return true;
+  if (block.shape == "box") return x[D - 1] < surface_top<D>(block, x);
   double q = 0.0;
   for (int k = 0; k < D; ++k) {
     const auto kk = static_cast<std::size_t>(k);
@@ -171,7 +183,9 @@ std::vector<Vec<D>> block_positions(const FluidBlock& block, double dx) {
   long total = 1;
   for (int k = 0; k < D; ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    count[kk] = static_cast<long>(std::floor((block.max[kk] - block.min[kk]) / dx + 1e-6));
+    // A mound rises above the box's top: the lattice reaches its crest (inside() cuts it).
+    const double extra = k == D - 1 ? block.surface_amplitude : 0.0;
+    count[kk] = static_cast<long>(std::floor((block.max[kk] + extra - block.min[kk]) / dx + 1e-6));
     total *= count[kk];
   }
   for (long n = 0; n < total; ++n) {
@@ -218,7 +232,6 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
     // smoothing length follows it, h = h_over_dx * spacing.
     const double block_dx = block.spacing > 0.0 ? block.spacing : dx;
     const double h = spec.h_over_dx * block_dx;
-    const double top = block.max[D - 1];
     // A lattice particle carries the volume of its cell; random ones share the shape's.
     const double volume = block.layout == "random"
                               ? shape_volume<D>(block) / static_cast<double>(block.count)
@@ -232,9 +245,11 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
       for (int r = 0; r < D; ++r)
         for (int c = 0; c < D; ++c)
           v[r] += block.velocity_gradient[static_cast<std::size_t>(r * D + c)] * (x[c] - centre[c]);
-      const double rho = block.density > 0.0 ? block.density
-                         : block.hydrostatic ? phys.eos.hydrostatic_density(g * (top - x[D - 1]))
-                                             : phys.eos.rho0;
+      const double rho =
+          block.density > 0.0 ? block.density
+          : block.hydrostatic
+              ? phys.eos.hydrostatic_density(g * (surface_top<D>(block, x) - x[D - 1]))
+              : phys.eos.rho0;
       ps.add_real(next_id++, x, v, rho * volume, rho, h);
       if (ps.uses(kFieldEnergy)) ps.e[ps.n_real - 1] = block.internal_energy;
     }
@@ -252,6 +267,7 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
     walls.kind[k][0] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k)]);
     walls.kind[k][1] = wall_kind(spec.walls[static_cast<std::size_t>(2 * k + 1)]);
   }
+  walls.periodic_from = spec.periodic_from;
   for (const auto& mw : spec.moving_walls)
     walls.motion[mw.axis][mw.side] = WallMotion{mw.velocity, mw.amplitude, mw.period};
   auto scheme =

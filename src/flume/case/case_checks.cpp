@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flume/case/table_reader.hpp"
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
 #include "flume/schemes/registry.hpp"
@@ -13,86 +14,6 @@
 namespace flume {
 
 namespace {
-
-class Reader {
- public:
-  Reader(const toml::table& t, std::string file) : t_(t), file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw InputError(fmt::format("{}: {}: {}", file_, key, what));
-  }
-
-  const toml::node& node(const std::string& key) const {
-    auto v = t_.at_path(key);
-    if (!v) fail(key, "missing");
-    return *v.node();
-  }
-  double num(const std::string& key) const {
-    const auto& n = node(key);
-    if (auto d = n.value<double>()) return *d;
-    fail(key, "must be a number");
-  }
-  long integer(const std::string& key) const {
-    return static_cast<long>(*node(key).value<int64_t>());
-  }
-  bool boolean(const std::string& key) const { return *node(key).value<bool>(); }
-  std::string str(const std::string& key) const { return *node(key).value<std::string>(); }
-  std::vector<double> vec(const std::string& key) const {
-    std::vector<double> out;
-    for (const auto& e : *node(key).as_array())
-      out.push_back(*e.value<double>());
-    for (double x : out)
-      if (!std::isfinite(x)) fail(key, "must be finite");
-    return out;
-  }
-  std::vector<std::string> strings(const std::string& key) const {
-    std::vector<std::string> out;
-    for (const auto& e : *node(key).as_array()) {
-      if (!e.is_string()) fail(key, "must be an array of strings");
-      out.push_back(*e.value<std::string>());
-    }
-    return out;
-  }
-  std::vector<double> numbers(const std::string& key) const {
-    std::vector<double> out;
-    for (const auto& e : *node(key).as_array()) {
-      if (!e.is_number()) fail(key, "must be an array of numbers");
-      out.push_back(*e.value<double>());
-      if (!std::isfinite(out.back())) fail(key, "must be finite");
-    }
-    return out;
-  }
-
-  double positive(const std::string& key) const {
-    const double x = num(key);
-    if (!(x > 0.0) || !std::isfinite(x)) fail(key, fmt::format("= {}: must be > 0", x));
-    return x;
-  }
-  double non_negative(const std::string& key) const {
-    const double x = num(key);
-    if (!(x >= 0.0) || !std::isfinite(x)) fail(key, fmt::format("= {}: must be >= 0", x));
-    return x;
-  }
-  double in_range(const std::string& key, double lo, double hi) const {
-    const double x = num(key);
-    if (!(x >= lo && x <= hi)) fail(key, fmt::format("= {}: must be in [{}, {}]", x, lo, hi));
-    return x;
-  }
-  std::string one_of(const std::string& key, const std::vector<std::string>& allowed) const {
-    const std::string s = str(key);
-    if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
-      fail(key, fmt::format("= \"{}\": must be one of {}", s, fmt::join(allowed, ", ")));
-    return s;
-  }
-
- private:
-  const toml::table& t_;
-  std::string file_;
-};
-
-const char* axis_name(int k) {
-  return k == 0 ? "x" : k == 1 ? "y" : "z";
-}
 
 // A run that cannot fit in the machine's memory is refused before anything is allocated (a
 // mistyped spacing would otherwise be killed by the kernel for lack of memory, exit 137). The
@@ -248,7 +169,20 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   for (int k = 0; k < dim; ++k)
     for (const char* side : {"_min", "_max"})
       s.walls.push_back(r.one_of(std::string("boundaries.") + axis_name(k) + side,
-                                 {"free_slip", "no_slip", "open"}));
+                                 {"free_slip", "no_slip", "open", "periodic"}));
+  // W 6.1: a periodic axis is periodic on both sides (a particle leaving one re-enters at the
+  // other), and a tank is periodic along x only (the vertical axis holds gravity).
+  for (int k = 0; k < dim; ++k) {
+    const bool lo = s.walls[2 * k] == "periodic", hi = s.walls[2 * k + 1] == "periodic";
+    if (lo != hi)
+      r.fail(fmt::format("boundaries.{}_{}", axis_name(k), lo ? "max" : "min"),
+             fmt::format("must be \"periodic\" too: boundaries.{}_{} is periodic", axis_name(k),
+                         lo ? "min" : "max"));
+    if (lo && k == dim - 1)
+      r.fail(fmt::format("boundaries.{}_min", axis_name(k)),
+             "= \"periodic\": the vertical axis (gravity's) cannot be periodic");
+  }
+  s.periodic_from = r.non_negative("boundaries.periodic_from");
 
   if (const auto* moving = t.at_path("moving_walls").as_array()) {
     std::vector<std::string> sides;
@@ -263,9 +197,9 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
           static_cast<std::size_t>(std::find(sides.begin(), sides.end(), side) - sides.begin());
       mw.axis = static_cast<int>(idx / 2);
       mw.side = static_cast<int>(idx % 2);
-      if (s.walls[idx] == "open")
-        r.fail(key + ".side",
-               fmt::format("= \"{}\": boundaries.{} is open; only a wall moves", side, side));
+      if (s.walls[idx] == "open" || s.walls[idx] == "periodic")
+        r.fail(key + ".side", fmt::format("= \"{}\": boundaries.{} is {}; only a wall moves", side,
+                                          side, s.walls[idx]));
       for (const auto& other : s.moving_walls)
         if (other.axis == mw.axis && other.side == mw.side)
           r.fail(key + ".side", fmt::format("= \"{}\": moves in two entries", side));
@@ -337,7 +271,16 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       if (fb.max[k] - fb.min[k] < s.spacing)
         r.fail(key, fmt::format("is thinner than one particle spacing along {}", axis_name(k)));
     }
-    tallest = std::max(tallest, fb.max[dim - 1] - fb.min[dim - 1]);
+    fb.surface_amplitude = r.non_negative(key + ".surface_amplitude");
+    fb.surface_decay = r.non_negative(key + ".surface_decay");
+    fb.surface_from = r.one_of(key + ".surface_from", {"x_min", "x_max"}) == "x_max" ? 1 : 0;
+    if (fb.surface_amplitude > 0.0) {
+      if (dim != 2 || fb.shape != "box" || fb.layout != "lattice")
+        r.fail(key + ".surface_amplitude", "(W (6.21)'s mound) is for a 2D box on the lattice");
+      if (fb.max[dim - 1] + fb.surface_amplitude > s.domain_max[dim - 1])
+        r.fail(key + ".surface_amplitude", "puts the mound above the domain's top");
+    }
+    tallest = std::max(tallest, fb.max[dim - 1] + fb.surface_amplitude - fb.min[dim - 1]);
     s.blocks.push_back(fb);
   }
   check_fits_in_memory(r, s);
@@ -379,15 +322,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.profile_at = r.num("output.profile_at");
   s.profile_band = r.positive("output.profile_band");
 
-  s.surge_front = r.boolean("probes.surge_front");
-  s.column_height = r.boolean("probes.column_height");
-  s.semi_axes = r.boolean("probes.semi_axes");
-  if (s.semi_axes && dim != 2) r.fail("probes.semi_axes", "is for 2D cases");
-  s.bore = r.boolean("probes.bore");
-  if (s.bore && dim != 2) r.fail("probes.bore", "is for 2D cases");
-  s.floor_layer = r.positive("probes.floor_layer");
-  s.wall_band = r.positive("probes.wall_band");
-  s.detach_gap = r.positive("probes.detach_gap");
+  read_probes(r, s);
 
   s.checkpoint_every_steps = r.integer("checkpoint.every_steps");
   if (s.checkpoint_every_steps < 0)
@@ -406,82 +341,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   if (!(s.min_dt_ratio > 0.0 && s.min_dt_ratio < 1.0))
     r.fail("checks.min_dt_ratio", "must be between 0 and 1 (exclusive)");
 
-  s.quick = r.strings("validation.quick");
-  s.time_scale = r.positive("validation.time_scale");
-  s.notes = r.strings("validation.notes");
-  s.variants = r.strings("validation.variants");
-  // Picture times after the end are left out, not refused: a run shortened with
-  // --set case.end_time=... keeps working and draws the pictures it has.
-  for (double when : r.numbers("validation.pictures")) {
-    if (!(when >= 0.0)) r.fail("validation.pictures", fmt::format("{} s: must be >= 0", when));
-    if (when <= s.end_time) s.pictures.push_back(when);
-  }
-  s.picture_field = r.str("validation.picture_field");
-  s.diagnostics_plots = r.strings("validation.diagnostics_plots");
-  for (const auto& v : s.variants)
-    if (v.find('=') == std::string::npos)
-      r.fail("validation.variants", fmt::format("\"{}\": each entry is KEY=VALUE", v));
-  if (const auto* curves = t.at_path("validation.curves").as_array()) {
-    for (std::size_t c = 0; c < curves->size(); ++c) {
-      const std::string key = fmt::format("validation.curves[{}]", c);
-      CurveCheck cc;
-      cc.probe = r.one_of(key + ".probe", {"surge_front", "column_height", "semi_axis_x",
-                                           "semi_axis_y", "bore_front", "bore_height"});
-      const bool enabled = cc.probe == "surge_front"      ? s.surge_front
-                           : cc.probe == "column_height"  ? s.column_height
-                           : cc.probe.starts_with("bore") ? s.bore
-                                                          : s.semi_axes;
-      if (!enabled)
-        r.fail(key + ".probe",
-               fmt::format("= \"{}\": the case's [probes] do not measure it", cc.probe));
-      cc.label = r.str(key + ".label");
-      const std::string ref = r.str(key + ".reference");
-      if (ref.starts_with("theory:")) {
-        // A reference solution computed by flume (validation/theory_reference.hpp).
-        cc.theory =
-            r.one_of(key + ".reference", {"theory:elliptical_drop", "theory:bore"}).substr(7);
-      } else {
-        cc.reference = file.parent_path() / ref;
-        if (!std::filesystem::exists(cc.reference))
-          r.fail(key + ".reference", fmt::format("file {} not found", cc.reference.string()));
-      }
-      cc.reference_x = r.str(key + ".reference_x");
-      cc.reference_y = r.str(key + ".reference_y");
-      cc.source = r.str(key + ".source");
-      cc.value_scale = r.positive(key + ".value_scale");
-      cc.absolute = r.one_of(key + ".error", {"relative", "absolute"}) == "absolute";
-      cc.tolerance = r.positive(key + ".tolerance");
-      cc.quick_tolerance = r.positive(key + ".quick_tolerance");
-      cc.mean_tolerance = r.non_negative(key + ".mean_tolerance");
-      cc.quick_mean_tolerance = r.non_negative(key + ".quick_mean_tolerance");
-      cc.gated = r.boolean(key + ".gated");
-      const std::string stat = r.one_of(key + ".statistic", {"pointwise", "mean", "slope"});
-      cc.statistic = stat == "mean"    ? CurveStatistic::mean
-                     : stat == "slope" ? CurveStatistic::slope
-                                       : CurveStatistic::pointwise;
-      cc.window_from = r.non_negative(key + ".window_from");
-      cc.window_to = r.non_negative(key + ".window_to");
-      if (cc.window_to != 0.0 && !(cc.window_to > cc.window_from))
-        r.fail(key + ".window_to", "must exceed window_from (or be 0: to the last point)");
-      s.curves.push_back(cc);
-    }
-  }
-  if (const auto* profiles = t.at_path("validation.profiles").as_array()) {
-    for (std::size_t c = 0; c < profiles->size(); ++c) {
-      const std::string key = fmt::format("validation.profiles[{}]", c);
-      ProfileCheck pc;
-      pc.field = r.one_of(key + ".field", {"rho", "p", "u"});
-      pc.theory = r.one_of(key + ".reference", {"theory:riemann"}).substr(7);
-      if (!s.profile) r.fail(key, "compares profile.csv: set output.profile = true");
-      if (s.eos != "ideal_gas" || s.blocks.size() != 2)
-        r.fail(key + ".reference",
-               "= \"theory:riemann\" needs an ideal gas in two fluid blocks (left, right)");
-      pc.tolerance = r.positive(key + ".tolerance");
-      pc.quick_tolerance = r.positive(key + ".quick_tolerance");
-      pc.gated = r.boolean(key + ".gated");
-      s.profiles.push_back(pc);
-    }
-  }
+  read_validation(r, t, file, s);
   return s;
 }
 

@@ -78,12 +78,17 @@ max_flow_speed = 0.0   # u_max, m/s; 0 = sqrt(2 g H), H the tallest fluid block 
 min = {zero}           # box corner, m
 max = {one}            # box corner, m
 
-[boundaries]           # each side: free_slip | no_slip (mirror ghosts, W 6.1) | open
+[boundaries]           # each side: free_slip | no_slip (mirror ghosts, W 6.1) | open |
+                       # periodic (both sides of a horizontal axis: ghosts are the other end's
+                       # particles shifted by the domain's length, and a particle that leaves
+                       # re-enters at the other end, W 6.1)
 x_min = "free_slip"
 x_max = "free_slip"
 y_min = "free_slip"
 y_max = "free_slip"
-{z_walls}
+{z_walls}periodic_from = 0.0    # s: periodic sides are free-slip walls before this time (W 6.4.2
+                       # forms the wave in a closed tank and makes it periodic at t = 4 s)
+
 [output]
 interval = 0.01        # s between rows of diagnostics.csv and probes.csv
 snapshot_interval = 0.05  # s between ParaView snapshots; 0 = none
@@ -104,6 +109,20 @@ floor_layer = 2.0      # surge front: particles within this many spacings of the
 wall_band = 2.0        # column height: particles within this many spacings of the wall count
 detach_gap = 3.0       # spacings: particles farther than this from the main body of water are
                        # spray, counted by neither probe
+waves = false          # 2D wave tank (probes/wave_probes.hpp): crest_x (m, where the depth
+                       # of water, from the particles' masses, is highest; unwrapped in a
+                       # periodic tank), crest_amplitude (m, that depth minus still_depth)
+gauges = []            # m along x: wave gauges gauge_1, gauge_2, ... (m, the depth there minus
+                       # still_depth); needs waves = true
+still_depth = 0.0      # m, H of the tank; 0 = the first fluid block's top above domain.min
+still_water = false    # bed_pressure (Pa: the four bottom rows' p + rho0 g y, middle 80 % of
+                       # the width) and water_level (m: twice the particles' mean height)
+density_deviation = false  # density_deviation: max |rho - rho0| / rho0 over the particles
+centre_of_mass = false # centre_x, centre_y (, centre_z): the water's centre of mass, m
+breaking = false       # 2D wave tank (probes/breaking.hpp): overturn (m, the tallest air gap under
+                       # water in any column two spacings wide of the main body) and broken_at
+                       # (s, the first time it exceeded breaking_threshold spacings; 0 before)
+breaking_threshold = 4.0  # spacings
 
 [checkpoint]           # HDF5 checkpoints in checkpoints/ of the run directory (flume resume)
 every_steps = 0        # steps between checkpoints; 0 = not by steps
@@ -121,6 +140,8 @@ quick = []             # "KEY=VALUE" overrides of the reduced-resolution run (va
 time_scale = 1.0       # s; the references' time is t / time_scale
 notes = []             # the papers' own numbers, quoted in the report
 variants = []          # "KEY=VALUE": other configurations run and reported beside the case
+quick_variants = true  # whether validate --quick runs the variants too (false: the case alone,
+                       # for a case whose runs are long)
 pictures = []          # s: particle pictures (PNG) of every configuration near these times (later than end_time: left out)
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
 diagnostics_plots = []  # diagnostics.csv columns plotted against time for every configuration
@@ -138,7 +159,11 @@ diagnostics_plots = []  # diagnostics.csv columns plotted against time for every
 #   rho volume / count; spacing then sets only h), count = 0, seed = 1, min_distance = 0.0
 #   (spacings, at most 1: a random candidate closer than that to a placed particle is drawn
 #   again; 0 = independent uniform positions). A random body is moved as a whole so that its
-#   centre of mass is the shape's centre.
+#   centre of mass is the shape's centre. surface_amplitude = 0.0 (m, B), surface_decay = 0.0
+#   (1/m, k), surface_from = "x_min" (or "x_max"): a 2D lattice box whose top is
+#   y = max_y + B exp(-k d), d the distance from that side (W (6.21): the mound that collapses
+#   into a solitary wave); with hydrostatic = true each column starts hydrostatic under its own
+#   surface.
 # [[moving_walls]]: a wall side that moves along its normal with a prescribed motion (the bore's
 #   push wall, BL 5.4; a piston wave-maker): side = "x_max" (any side that is a wall),
 #   velocity = 0.0 (m/s, along the axis), amplitude = 0.0 (m), period = 0.0 (s): the wall stands
@@ -156,8 +181,20 @@ diagnostics_plots = []  # diagnostics.csv columns plotted against time for every
 #   columns t (s), front (m, v_s t from the x_min wall) and height (m),
 #   gated = true (false: the curve is reported beside the others but cannot fail validation),
 #   statistic = "pointwise" (every reference point), "mean" (the mean over the window) or
-#   "slope" (the least-squares slope over the window: a speed from a position),
-#   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point)
+#   "slope" (the least-squares slope over the window: a speed from a position) or "max" (the
+#   largest value over the window: a deviation kept within a bound),
+#   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point),
+#   reference = "theory:kdv": columns t (s), amplitude (m: the amplitude KdV gives the speed
+#   measured over the window, W (6.16): A = 2 H (V / sqrt(g H) - 1), V the slope of crest_x) and
+#   speed (m/s: KdV's speed of the amplitude measured, the mean of crest_amplitude),
+#   reference = "theory:still_water": columns t (s), bed_pressure (Pa, rho0 g H), water_level
+#   (m, H) and zero, for the first fluid block's depth H,
+#   reference = "theory:free_fall": columns t (s) and centre_y (m): the centre of mass of
+#   water whose last fluid block falls freely while the others rest, from its first reading,
+#   y(0) - f g t^2 / 2 with f the last block's share of the mass (until the block lands),
+#   reference = "self": the same statistic of the same probe over reference_from..reference_to
+#   (s; reference_x and reference_y are then not used): a speed or height that must not change
+#   between the passes of a periodic tank; reference_from = 0.0, reference_to = 0.0
 # [[validation.profiles]]: a field of profile.csv compared at the end time with an exact
 #   solution: field = "rho" (or "p", "u"), reference = "theory:riemann" (the exact Riemann
 #   solution of an ideal gas between the first two fluid blocks, the diaphragm at the first
@@ -180,12 +217,14 @@ const std::string& fluid_block_defaults(int dimension) {
       "min = [0.0, 0.0]\nmax = [1.0, 1.0]\nvelocity = [0.0, 0.0]\nhydrostatic = true\n"
       "density = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0]\nshape = \"box\"\nlayout = \"lattice\"\n"
-      "count = 0\nseed = 1\nmin_distance = 0.0\n";
+      "count = 0\nseed = 1\nmin_distance = 0.0\nsurface_amplitude = 0.0\nsurface_decay = 0.0\n"
+      "surface_from = \"x_min\"\n";
   static const std::string d3 =
       "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
       "hydrostatic = true\ndensity = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
-      "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n";
+      "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n"
+      "surface_amplitude = 0.0\nsurface_decay = 0.0\nsurface_from = \"x_min\"\n";
   return dimension == 3 ? d3 : d2;
 }
 
@@ -205,7 +244,8 @@ const std::string& curve_defaults() {
       "probe = \"\"\nlabel = \"\"\nreference = \"\"\nreference_x = \"\"\nreference_y = \"\"\n"
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
       "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n"
-      "statistic = \"pointwise\"\nwindow_from = 0.0\nwindow_to = 0.0\n";
+      "statistic = \"pointwise\"\nwindow_from = 0.0\nwindow_to = 0.0\n"
+      "reference_from = 0.0\nreference_to = 0.0\n";
   return d;
 }
 

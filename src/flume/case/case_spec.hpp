@@ -26,6 +26,12 @@ struct FluidBlock {
   long count = 0;                  // particles of a random layout
   long seed = 1;                   // its random seed (std::mt19937_64)
   double min_distance = 0.0;       // spacings: no two random particles closer (0 = Poisson)
+  // A free surface that is not flat (2D, the box's top): y = max_y + B exp(-k d), W (6.21), with
+  // d the distance along x from the side surface_from (0 = x_min, 1 = x_max): the mound that
+  // collapses into a solitary wave (W 6.4.1). B = 0: a flat top.
+  double surface_amplitude = 0.0;  // B, m
+  double surface_decay = 0.0;      // k, 1/m
+  int surface_from = 0;            // 0: the mound at x_min; 1: at x_max
 };
 
 // A wall side moving along its normal (boundaries/wall_motion.hpp).
@@ -57,6 +63,10 @@ struct CurveCheck {
   CurveStatistic statistic = CurveStatistic::pointwise;
   double window_from = 0.0;
   double window_to = 0.0;  // 0 = to the reference's last point
+  // reference = "self": the same statistic of the same probe over this earlier window (a
+  // speed or height that must not change between passes of a periodic tank).
+  double reference_from = 0.0;
+  double reference_to = 0.0;
 };
 
 // A profile field compared with a reference solution at the end time (validate): the relative
@@ -114,7 +124,9 @@ struct CaseSpec {
 
   // [domain] and [boundaries]
   std::vector<double> domain_min, domain_max;  // m
-  std::vector<std::string> walls;  // per axis lower, upper: "free_slip" | "no_slip" | "open"
+  // per axis lower, upper: "free_slip" | "no_slip" | "open" | "periodic" (both sides of an axis)
+  std::vector<std::string> walls;
+  double periodic_from = 0.0;  // s: periodic sides are free-slip walls before this time (W 6.4.2)
   std::vector<FluidBlock> blocks;
   std::vector<MovingWall> moving_walls;
 
@@ -130,11 +142,19 @@ struct CaseSpec {
   // [probes]
   bool surge_front = false;
   bool column_height = false;
-  bool semi_axes = false;    // semi_axis_x, semi_axis_y from the cloud's second moments (2D)
-  bool bore = false;         // bore_front, bore_height (probes/bore.hpp)
-  double floor_layer = 2.0;  // spacings
-  double wall_band = 2.0;    // spacings
-  double detach_gap = 3.0;   // spacings
+  bool semi_axes = false;      // semi_axis_x, semi_axis_y from the cloud's second moments (2D)
+  bool bore = false;           // bore_front, bore_height (probes/bore.hpp)
+  double floor_layer = 2.0;    // spacings
+  double wall_band = 2.0;      // spacings
+  double detach_gap = 3.0;     // spacings
+  bool waves = false;          // crest_x, crest_amplitude, gauge_1... (probes/wave_probes.hpp, 2D)
+  std::vector<double> gauges;  // m along x: wave gauges
+  double still_depth = 0.0;    // m, H: resolved (the first fluid block's height unless given)
+  bool still_water = false;    // bed_pressure, water_level
+  bool density_deviation = false;   // density_deviation: max |rho - rho0| / rho0
+  bool centre_of_mass = false;      // centre_x, centre_y(, centre_z): the water's centre of mass
+  bool breaking = false;            // overturn, broken_at (probes/breaking.hpp, 2D)
+  double breaking_threshold = 4.0;  // spacings: an air gap under water this tall is breaking
 
   // [checkpoint] (run/checkpoint.hpp)
   long checkpoint_every_steps = 0;      // steps between checkpoints; 0 = not by steps
@@ -151,6 +171,7 @@ struct CaseSpec {
   double time_scale = 1.0;            // s: reference time = t / time_scale
   std::vector<std::string> notes;     // the papers' numbers, set beside flume's in the report
   std::vector<std::string> variants;  // KEY=VALUE: other configurations run and reported beside
+  bool quick_variants = true;         // whether validate --quick runs the variants too
   std::vector<double> pictures;       // s: particle pictures of every configuration at these times
   std::string picture_field;          // the snapshot field that colours them
   std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run

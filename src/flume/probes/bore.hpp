@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "flume/core/particle_set.hpp"
+#include "flume/probes/water_depth.hpp"
 
 namespace flume {
 
@@ -50,10 +51,7 @@ inline BoreMeasure measure_bore(const ParticleSet<2>& ps, const std::vector<char
     const double amount = ps.m[i] / (rho0 * spacing);
     const auto base = static_cast<long>(std::floor(s));
     for (long c = base - 1; c <= base + 2; ++c) {
-      const double q = std::abs(s - static_cast<double>(c));
-      const double b = q < 1.0   ? 2.0 / 3.0 - q * q + 0.5 * q * q * q
-                       : q < 2.0 ? (2.0 - q) * (2.0 - q) * (2.0 - q) / 6.0
-                                 : 0.0;
+      const double b = cubic_bspline(s - static_cast<double>(c));
       if (b > 0.0) add(c, amount * b);
     }
   }

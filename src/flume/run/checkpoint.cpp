@@ -16,7 +16,9 @@ namespace flume {
 namespace {
 
 constexpr const char* kFormat = "flume checkpoint";
-constexpr std::int64_t kFormatVersion = 1;
+// 2: probe_state holds each probe's memory preceded by its length (run/case_probes.hpp); 1 held
+// the semi-axes' two moments alone.
+constexpr std::int64_t kFormatVersion = 2;
 constexpr std::size_t kAnySize = std::numeric_limits<std::size_t>::max();
 
 // 64-bit FNV-1a over the bytes of every value, in the order transfer() lists them.

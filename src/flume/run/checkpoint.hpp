@@ -32,7 +32,7 @@ struct OutputState {
   std::int64_t diagnostics_rows = 0;  // rows of diagnostics.csv and probes.csv written
   std::int64_t probe_rows = 0;
   std::vector<double> snapshot_times;  // the times of the snapshots written, s
-  std::vector<double> probe_state;     // the probes' own memory (semi-axes' reference moments)
+  std::vector<double> probe_state;     // the probes' own memory (CaseProbes::state)
 };
 
 template <int D>

@@ -15,11 +15,7 @@
 #include "flume/case/case_reader.hpp"
 #include "flume/core/error.hpp"
 #include "flume/io/atomic_file.hpp"
-#include "flume/probes/bore.hpp"
-#include "flume/probes/column_height.hpp"
-#include "flume/probes/fluid_body.hpp"
-#include "flume/probes/semi_axes.hpp"
-#include "flume/probes/surge_front.hpp"
+#include "flume/run/case_probes.hpp"
 #include "flume/run/checkpoint.hpp"
 #include "flume/run/interrupts.hpp"
 #include "flume/run/profile.hpp"
@@ -59,55 +55,6 @@ io::PointCloud snapshot_cloud(const ParticleSet<D>& ps) {
         {"bl41_deviation", 1,
          std::vector<double>(ps.bl41_deviation.begin(), ps.bl41_deviation.begin() + n)});
   return cloud;
-}
-
-std::vector<std::string> probe_columns(const CaseSpec& spec) {
-  // The same order as probe_row's.
-  std::vector<std::string> cols{"time"};
-  if (spec.semi_axes) cols.insert(cols.end(), {"semi_axis_x", "semi_axis_y"});
-  if (spec.surge_front) cols.push_back("surge_front");
-  if (spec.column_height) cols.push_back("column_height");
-  if (spec.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
-  return cols;
-}
-
-// The semi-axes probe of a 2D case: nominal semi-axes from its first fluid block.
-std::optional<SemiAxesProbe> semi_axes_probe(const CaseSpec& spec) {
-  if (!spec.semi_axes) return std::nullopt;
-  const auto& b = spec.blocks.front();
-  return SemiAxesProbe({0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1])});
-}
-
-template <int D>
-std::vector<double> probe_row(const CaseSpec& spec, const Simulation<D>& sim,
-                              std::optional<SemiAxesProbe>& semi_axes) {
-  const auto& ps = sim.particles();
-  const double wall = spec.domain_min[0];
-  const double floor = spec.domain_min[D - 1];
-  std::vector<double> row{sim.time()};
-  if constexpr (D == 2) {
-    if (semi_axes) {
-      const auto ab = (*semi_axes)(ps);
-      row.insert(row.end(), ab.begin(), ab.end());
-    }
-  }
-  if (!spec.surge_front && !spec.column_height && !spec.bore) return row;
-  const auto body = main_fluid_body(ps, spec.detach_gap * spec.spacing);
-  if (spec.surge_front)
-    row.push_back(
-        surge_front(ps, body, wall, floor, spec.floor_layer * spec.spacing, spec.spacing));
-  if (spec.column_height)
-    row.push_back(
-        column_height(ps, body, wall, floor, spec.wall_band * spec.spacing, spec.spacing));
-  if constexpr (D == 2) {
-    if (spec.bore) {
-      // h0: the depth of the incoming layer, the first fluid block's height.
-      const auto& b = spec.blocks.front();
-      const auto m = measure_bore(ps, body, wall, spec.rho0, b.max[1] - b.min[1], spec.spacing);
-      row.insert(row.end(), {m.front, m.height});
-    }
-  }
-  return row;
 }
 
 // The in-place progress line: simulated time, percent, steps per second, ETA.
@@ -171,7 +118,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
 
   std::filesystem::create_directories(opt.out_dir);
   io::write_file_atomic(opt.out_dir / "case.toml", spec.resolved_toml);
-  RunOutput out(opt.out_dir, diagnostics_columns<D>(), probe_columns(spec), opt.quiet,
+  RunOutput out(opt.out_dir, diagnostics_columns<D>(), CaseProbes<D>(spec).columns(), opt.quiet,
                 from ? &from->output : nullptr);
   for (const auto& line : notes)
     out.log(line);
@@ -179,7 +126,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
   Progress progress(tty && !opt.quiet, spec.end_time);
 
   std::unique_ptr<Simulation<D>> sim;
-  auto semi_axes = semi_axes_probe(spec);
+  CaseProbes<D> probes(spec);
   try {
     sim = std::make_unique<Simulation<D>>(build_simulation<D>(spec));
     if (from) sim->restore(from->particles, from->state);
@@ -200,13 +147,13 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
     auto record = [&] {
       out.add_diagnostics(diagnostics_row(sim->particles(), sim->physics(), sim->time(),
                                           sim->steps(), sim->last_dt()));
-      out.add_probes(probe_row(spec, *sim, semi_axes));
+      out.add_probes(probes.row(*sim));
     };
     long next_output = 1, next_snapshot = 1;
     if (from) {
       next_output = static_cast<long>(from->output.next_output);
       next_snapshot = static_cast<long>(from->output.next_snapshot);
-      if (semi_axes) semi_axes->restore(from->output.probe_state);
+      probes.restore(from->output.probe_state);
       out.log(fmt::format("resumed at step {}, t = {:.6g} s", sim->steps(), sim->time()));
     } else {
       record();
@@ -226,7 +173,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
       c.output.diagnostics_rows = static_cast<std::int64_t>(out.diagnostics_rows());
       c.output.probe_rows = static_cast<std::int64_t>(out.probe_rows());
       c.output.snapshot_times = out.snapshot_times();
-      if (semi_axes) c.output.probe_state = semi_axes->state();
+      c.output.probe_state = probes.state();
       c.particles = state_of(sim->particles());
       write_checkpoint(checkpoint_path(opt.out_dir, sim->steps()), c);
       prune_checkpoints(opt.out_dir, spec.checkpoint_keep);

@@ -63,6 +63,19 @@ double slope_of(const std::vector<double>& x, const std::vector<double>& y) {
 
 }  // namespace
 
+double window_statistic(const std::vector<double>& t, const std::vector<double>& y,
+                        CurveStatistic statistic, double from, double to) {
+  std::vector<double> xs, ys;
+  for (std::size_t k = 0; k < t.size() && k < y.size(); ++k)
+    if (t[k] >= from && t[k] <= to) {
+      xs.push_back(t[k]);
+      ys.push_back(y[k]);
+    }
+  if (xs.size() < 2 || statistic == CurveStatistic::pointwise) return std::nan("");
+  if (statistic == CurveStatistic::max) return *std::max_element(ys.begin(), ys.end());
+  return statistic == CurveStatistic::mean ? mean_of(ys) : slope_of(xs, ys);
+}
+
 std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
                                             const std::vector<double>& y,
                                             const std::vector<double>& ref_x,
@@ -91,6 +104,9 @@ std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
   if (statistic == CurveStatistic::mean) {
     out.value = mean_of(fv);
     out.reference = mean_of(rv);
+  } else if (statistic == CurveStatistic::max) {
+    out.value = *std::max_element(fv.begin(), fv.end());
+    out.reference = *std::max_element(rv.begin(), rv.end());
   } else {
     out.value = slope_of(xs, fv);
     out.reference = slope_of(xs, rv);

@@ -27,6 +27,7 @@ enum class CurveStatistic {
   pointwise,  // at every reference point (compare_curve)
   mean,       // the mean of the values at the reference points
   slope,      // their least-squares slope against x (a speed from a position)
+  max,        // the largest of them (a deviation that must stay within a bound)
 };
 
 // Compares the statistic of flume's values (interpolated at the reference points inside the
@@ -39,6 +40,19 @@ std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
                                             const std::vector<double>& ref_y, double time_scale,
                                             double value_scale, bool absolute,
                                             CurveStatistic statistic, double from, double to);
+
+// "mean", "slope", "max" or "pointwise".
+inline const char* statistic_name(CurveStatistic s) {
+  return s == CurveStatistic::mean    ? "mean"
+         : s == CurveStatistic::slope ? "slope"
+         : s == CurveStatistic::max   ? "max"
+                                      : "pointwise";
+}
+
+// The statistic (mean or least-squares slope) of the samples (t, y) with t in [from, to]; NaN
+// when fewer than two fall inside (pointwise is not a statistic: NaN).
+double window_statistic(const std::vector<double>& t, const std::vector<double>& y,
+                        CurveStatistic statistic, double from, double to);
 
 // Linear interpolation of (xs, ys) at x, xs ascending; x must lie within [xs.front(), xs.back()].
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);

@@ -83,8 +83,13 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
     md += fmt::format(
         "Compared: the {} of the values at the reference's points with {} from {:.3g} to the "
         "row's {}.\n",
-        check.statistic == CurveStatistic::mean ? "mean" : "least-squares slope (per unit x)",
+        check.statistic == CurveStatistic::slope ? "least-squares slope (per unit x)"
+                                                 : statistic_name(check.statistic),
         check.reference_x, check.window_from, check.reference_x);
+  if (check.theory == "self")
+    md += fmt::format(
+        "The reference is the same statistic of the same run over t = {:.4g}-{:.4g} s.\n",
+        check.reference_from, check.reference_to);
   md += fmt::format("\n| {} | reference {} |", check.reference_x, check.reference_y);
   std::string rule = "\n|---|---|";
   for (const auto& s : cr.series) {

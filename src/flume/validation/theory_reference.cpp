@@ -4,9 +4,12 @@
 
 #include <cmath>
 
+#include "flume/case/build_simulation.hpp"
 #include "flume/core/error.hpp"
 #include "flume/theory/bore.hpp"
 #include "flume/theory/elliptical_drop.hpp"
+#include "flume/theory/solitary_wave.hpp"
+#include "flume/validation/curve_compare.hpp"
 
 namespace flume {
 
@@ -61,12 +64,106 @@ io::CsvData bore_reference(const CaseSpec& spec) {
   return out;
 }
 
+double gravity_of(const CaseSpec& spec) {
+  double g2 = 0.0;
+  for (double x : spec.gravity)
+    g2 += x * x;
+  return std::sqrt(g2);
+}
+
+// The run's output times inside the check's window (where a window statistic is compared).
+std::vector<double> window_times(const CurveCheck& check, const io::CsvData& probes) {
+  const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
+  std::vector<double> out;
+  for (double t : probes.column("time"))
+    if (t >= check.window_from && t <= to) out.push_back(t);
+  return out;
+}
+
+// Still water W 6.5 for the still depth H: a bed pressure of rho0 g H, the level at H; at the
+// run's own output times (its last time is the end time to round-off, which a grid of
+// multiples of the interval could miss by an ulp and so leave a window uncovered).
+io::CsvData still_water_reference(const CaseSpec& spec, const io::CsvData& probes) {
+  const double g = gravity_of(spec), h = spec.still_depth;
+  io::CsvData out;
+  out.columns = {"t", "bed_pressure", "water_level", "zero"};
+  for (double t : probes.column("time"))
+    out.rows.push_back({t, spec.rho0 * g * h, h, 0.0});
+  return out;
+}
+
+// KdV W (6.16) for the run's own crest: the amplitude its measured speed implies (constant),
+// and the crest track at the speed its measured amplitude implies (a line through the window's
+// first point, so that its slope is that speed).
+io::CsvData kdv_reference(const CaseSpec& spec, const CurveCheck& check,
+                          const io::CsvData& probes) {
+  const double g = gravity_of(spec), h = spec.still_depth;
+  const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
+  const auto t = probes.column("time");
+  const double speed =
+      window_statistic(t, probes.column("crest_x"), CurveStatistic::slope, check.window_from, to);
+  const double amplitude = window_statistic(t, probes.column("crest_amplitude"),
+                                            CurveStatistic::mean, check.window_from, to);
+  io::CsvData out;
+  out.columns = {"t", "amplitude", "crest_x"};
+  const double v = kdv_speed(amplitude, h, g);
+  for (double tw : window_times(check, probes))
+    out.rows.push_back({tw, kdv_amplitude(speed, h, g), v * tw});
+  return out;
+}
+
+// The water's centre of mass while its last fluid block falls freely and the rest is at rest:
+// y(t) = y(0) - f g t^2 / 2, f the block's share of the mass, from the particles as the case
+// lays them out (a lattice disc holds a little more or less water than the circle), from the
+// run's first reading, at the run's output times.
+io::CsvData free_fall_reference(const CaseSpec& spec, const io::CsvData& probes) {
+  const auto mass_of = [](const CaseSpec& s) {
+    double m = 0.0;
+    if (s.dimension == 3) {
+      const auto ps = build_particles<3>(s, build_physics<3>(s));
+      for (std::size_t i = 0; i < ps.n_real; ++i)
+        m += ps.m[i];
+    } else {
+      const auto ps = build_particles<2>(s, build_physics<2>(s));
+      for (std::size_t i = 0; i < ps.n_real; ++i)
+        m += ps.m[i];
+    }
+    return m;
+  };
+  CaseSpec last = spec;
+  last.blocks = {spec.blocks.back()};
+  const double f = mass_of(last) / mass_of(spec), g = gravity_of(spec);
+  const auto t = probes.column("time"), y = probes.column("centre_y");
+  io::CsvData out;
+  out.columns = {"t", "centre_y"};
+  for (std::size_t k = 0; k < t.size(); ++k)
+    out.rows.push_back({t[k], y.front() - 0.5 * f * g * t[k] * t[k]});
+  return out;
+}
+
+// The probe's own statistic over the reference window, as a table over the check's window
+// whose statistic is that value (a constant for a mean, a line of that slope for a slope).
+io::CsvData self_reference(const CurveCheck& check, const io::CsvData& probes) {
+  const double value = window_statistic(probes.column("time"), probes.column(check.probe),
+                                        check.statistic, check.reference_from, check.reference_to);
+  io::CsvData out;
+  out.columns = {"t", "value"};
+  for (double tw : window_times(check, probes))
+    out.rows.push_back({tw, check.statistic == CurveStatistic::slope ? value * tw : value});
+  return out;
+}
+
 }  // namespace
 
-io::CsvData curve_reference(const CaseSpec& spec, const CurveCheck& check) {
+io::CsvData curve_reference(const CaseSpec& spec, const CurveCheck& check,
+                            const io::CsvData& probes) {
   if (check.theory.empty()) return io::read_csv(check.reference);
   if (check.theory == "elliptical_drop") return elliptical_drop_reference(spec);
   if (check.theory == "bore") return bore_reference(spec);
+  if (check.theory == "still_water") return still_water_reference(spec, probes);
+  if (check.theory == "kdv") return kdv_reference(spec, check, probes);
+  if (check.theory == "self") return self_reference(check, probes);
+  if (check.theory == "free_fall") return free_fall_reference(spec, probes);
   throw InputError(
       fmt::format("{}: unknown reference theory:{}", spec.file.string(), check.theory));
 }

@@ -19,6 +19,7 @@
 #include "flume/validation/profile_compare.hpp"
 #include "flume/validation/report.hpp"
 #include "flume/validation/theory_reference.hpp"
+#include "flume/validation/variant.hpp"
 
 namespace flume {
 
@@ -36,12 +37,6 @@ std::string shell_quote(const std::string& s) {
   for (char c : s)
     out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
-}
-
-// The label of a variant: the value of its override ("scheme.preset=csph" -> "csph").
-std::string variant_label(const std::string& override_text) {
-  const auto eq = override_text.find('=');
-  return eq == std::string::npos ? override_text : override_text.substr(eq + 1);
 }
 
 // The file stem of curve c's plot and data: case and probe, plus the curve's index when another
@@ -210,10 +205,12 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     cr.profile_tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
 
   std::vector<std::pair<std::string, std::vector<std::string>>> configs{{cr.spec.preset, base}};
-  for (const auto& v : cr.spec.variants) {
+  for (const auto& v :
+       opt.quick && !cr.spec.quick_variants ? std::vector<std::string>{} : cr.spec.variants) {
+    const Variant variant = parse_variant(v);
     auto overrides = base;
-    overrides.push_back(v);
-    configs.emplace_back(variant_label(v), overrides);
+    overrides.insert(overrides.end(), variant.overrides.begin(), variant.overrides.end());
+    configs.emplace_back(variant.label, overrides);
   }
   // Profile cases also run every configuration at twice the spacing, to show convergence.
   const auto coarse =
@@ -233,7 +230,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     if (curves) {
       const auto t = probes.back().column("time");
       for (const auto& check : spec.curves) {
-        const auto ref = curve_reference(spec, check);
+        const auto ref = curve_reference(spec, check, probes.back());
         const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
         s.curves.push_back(
             compare_over_window(t, probes.back().column(check.probe), ref.column(check.reference_x),
@@ -265,10 +262,10 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   plot_diagnostics(opt.out_dir, cr);
   if (!cr.spec.profiles.empty() && cr.series.front().run.completed) plot_profiles(opt.out_dir, cr);
   for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
-    cr.plots.push_back(
-        cr.series.front().run.completed
-            ? plot_curve(opt.out_dir, cr, c, probes, curve_reference(cr.spec, cr.spec.curves[c]))
-            : std::string());
+    cr.plots.push_back(cr.series.front().run.completed
+                           ? plot_curve(opt.out_dir, cr, c, probes,
+                                        curve_reference(cr.spec, cr.spec.curves[c], probes.front()))
+                           : std::string());
   return cr;
 }
 
@@ -313,8 +310,8 @@ bool add_result_rows(const CaseResult& cr, nlohmann::ordered_json& rows) {
            {"metric", check.statistic == CurveStatistic::pointwise
                           ? fmt::format("{} at {}={:.3g}", check.probe, check.reference_x, p.x)
                           : fmt::format("{} {} over {}=[{:.3g}, {:.3g}]", check.probe,
-                                        check.statistic == CurveStatistic::mean ? "mean" : "slope",
-                                        check.reference_x, check.window_from, p.x)},
+                                        statistic_name(check.statistic), check.reference_x,
+                                        check.window_from, p.x)},
            {"value", p.value},
            {"reference", p.reference},
            {"error", p.error},

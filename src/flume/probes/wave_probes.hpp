@@ -1,0 +1,101 @@
+// Measurements of a 2D wave tank (W 6.4; x along the tank, y up), all from the depth profile of
+// water_depth.hpp:
+// - the crest: where the depth is highest (highest_crest) and its amplitude above the still
+//   depth H, A = eta_max - H (W Fig 6.9). In a periodic tank the crest's position is unwrapped:
+//   each reading is taken as the image x + m L nearest the previous one, so a wave that has
+//   gone round the tank n times reads n L further on and its speed is the slope of crest_x
+//   (the tracker's last position is its state, kept in a checkpoint);
+// - wave gauges: the surface elevation eta(x_g) - H at fixed places, as a resistance gauge reads
+//   it (the mean of its column).
+// Speeds are taken from crest_x by validation's least-squares slope over a window (W reads them
+// off Fig 6.11(b) over t = 3-7 s).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "flume/probes/water_depth.hpp"
+
+namespace flume {
+
+struct WaveReading {
+  double crest_x = 0.0;          // m along the tank, unwrapped in a periodic tank
+  double crest_amplitude = 0.0;  // m above the still depth
+  std::vector<double> gauges;    // m above the still depth, one per gauge
+};
+
+class WaveProbe {
+ public:
+  WaveProbe(double still_depth, std::vector<double> gauges)
+      : still_(still_depth), gauges_(std::move(gauges)) {}
+
+  WaveReading operator()(const DepthProfile& d) {
+    WaveReading r;
+    const Crest c = highest_crest(d);
+    double x = c.x;
+    if (d.periodic && last_) {
+      const double L = d.length();
+      x += L * std::round((*last_ - x) / L);
+    }
+    last_ = x;
+    r.crest_x = x;
+    r.crest_amplitude = c.height - still_;
+    for (const double xg : gauges_)
+      r.gauges.push_back(d.at(xg) - still_);
+    return r;
+  }
+
+  // The tracker's last unwrapped crest position (a checkpoint's probe state): empty before the
+  // first reading.
+  std::vector<double> state() const {
+    return last_ ? std::vector<double>{*last_} : std::vector<double>{};
+  }
+  void restore(const std::vector<double>& s) {
+    if (s.size() == 1) last_ = s[0];
+  }
+
+ private:
+  double still_;
+  std::vector<double> gauges_;
+  std::optional<double> last_;
+};
+
+// Still water (W 6.5, W-3 of spec/cases.md): a tank at rest under gravity.
+struct StillWaterReading {
+  double bed_pressure = 0.0;       // Pa
+  double water_level = 0.0;        // m above the bed
+  double density_deviation = 0.0;  // max |rho - rho0| / rho0 over the particles
+};
+
+// - bed_pressure: the pressure at the bed as a gauge reads it: each particle's pressure in the
+//   four bottom rows (y - bed < 4 dx) and the middle 80 % of the tank's width, extrapolated to
+//   the bed with the hydrostatic gradient (p + rho0 g (y - bed)), averaged. An even number of
+//   rows: the pressure of a column carries a small odd-even row mode that a pair of rows cancels
+//   (tests/properties/test_hydrostatic_tank.cpp says more).
+// - water_level: twice the mean height of the particles above the bed, the height of the surface
+//   of a level layer on a lattice (n rows at (j + 1/2) dx have mean height n dx / 2); a layer
+//   that is compressed, or swells, reads lower or higher. Meaningful for still water only.
+// - density_deviation: the largest |rho_i - rho0| / rho0.
+template <int D>
+StillWaterReading read_still_water(const ParticleSet<D>& ps, double x_lo, double x_hi, double bed,
+                                   double rho0, double g, double dx) {
+  StillWaterReading r;
+  double p_sum = 0.0, y_sum = 0.0;
+  long p_count = 0;
+  const double margin = 0.1 * (x_hi - x_lo);
+  for (std::size_t i = 0; i < ps.n_real; ++i) {
+    const double y = ps.x[i][D - 1] - bed;
+    y_sum += y;
+    r.density_deviation = std::max(r.density_deviation, std::abs(ps.rho[i] - rho0) / rho0);
+    if (y < 4.0 * dx && ps.x[i][0] > x_lo + margin && ps.x[i][0] < x_hi - margin) {
+      p_sum += ps.p[i] + rho0 * g * y;
+      ++p_count;
+    }
+  }
+  r.bed_pressure = p_count ? p_sum / static_cast<double>(p_count) : 0.0;
+  r.water_level = ps.n_real ? 2.0 * y_sum / static_cast<double>(ps.n_real) : 0.0;
+  return r;
+}
+
+}  // namespace flume

@@ -1,0 +1,150 @@
+#include "flume/run/case_probes.hpp"
+
+#include <cmath>
+
+#include "flume/probes/bore.hpp"
+#include "flume/probes/column_height.hpp"
+#include "flume/probes/fluid_body.hpp"
+#include "flume/probes/surge_front.hpp"
+#include "flume/probes/water_depth.hpp"
+
+namespace flume {
+
+template <int D>
+CaseProbes<D>::CaseProbes(const CaseSpec& spec) : spec_(spec) {
+  if (spec.semi_axes) {
+    // Nominal semi-axes from the first fluid block.
+    const auto& b = spec.blocks.front();
+    semi_axes_.emplace(
+        std::array<double, 2>{0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1])});
+  }
+  if (spec.waves) waves_.emplace(spec.still_depth, spec.gauges);
+  if (spec.breaking) breaking_.emplace(spec.spacing, spec.breaking_threshold);
+}
+
+template <int D>
+std::vector<std::string> CaseProbes<D>::columns() const {
+  std::vector<std::string> cols{"time"};
+  if (spec_.semi_axes) cols.insert(cols.end(), {"semi_axis_x", "semi_axis_y"});
+  if (spec_.surge_front) cols.push_back("surge_front");
+  if (spec_.column_height) cols.push_back("column_height");
+  if (spec_.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
+  if (spec_.waves) {
+    cols.insert(cols.end(), {"crest_x", "crest_amplitude"});
+    for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
+      cols.push_back("gauge_" + std::to_string(g + 1));
+  }
+  if (spec_.breaking) cols.insert(cols.end(), {"overturn", "broken_at"});
+  if (spec_.still_water) cols.insert(cols.end(), {"bed_pressure", "water_level"});
+  if (spec_.density_deviation) cols.push_back("density_deviation");
+  if (spec_.centre_of_mass) {
+    cols.insert(cols.end(), {"centre_x", "centre_y"});
+    if (D == 3) cols.push_back("centre_z");
+  }
+  return cols;
+}
+
+template <int D>
+std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
+  const auto& ps = sim.particles();
+  const double wall = spec_.domain_min[0];
+  const double floor = spec_.domain_min[D - 1];
+  std::vector<double> row{sim.time()};
+  std::array<double, 2> breaking_row{};
+  if constexpr (D == 2) {
+    if (semi_axes_) {
+      const auto ab = (*semi_axes_)(ps);
+      row.insert(row.end(), ab.begin(), ab.end());
+    }
+  }
+  if (spec_.surge_front || spec_.column_height || spec_.bore || spec_.breaking) {
+    const auto body = main_fluid_body(ps, spec_.detach_gap * spec_.spacing);
+    if (spec_.surge_front)
+      row.push_back(
+          surge_front(ps, body, wall, floor, spec_.floor_layer * spec_.spacing, spec_.spacing));
+    if (spec_.column_height)
+      row.push_back(
+          column_height(ps, body, wall, floor, spec_.wall_band * spec_.spacing, spec_.spacing));
+    if constexpr (D == 2) {
+      if (spec_.bore) {
+        // h0: the depth of the incoming layer, the first fluid block's height.
+        const auto& b = spec_.blocks.front();
+        const auto m = measure_bore(ps, body, wall, spec_.rho0, b.max[1] - b.min[1], spec_.spacing);
+        row.insert(row.end(), {m.front, m.height});
+      }
+    }
+    if constexpr (D == 2) {
+      // In the order of columns(): after the waves' columns.
+      if (breaking_) breaking_row = (*breaking_)(ps, body, wall, sim.time());
+    }
+  }
+  if constexpr (D == 2) {
+    if (waves_) {
+      // Every particle counts: a wave tank's spray is water the depth must hold.
+      const bool periodic = spec_.walls[0] == "periodic" && sim.time() >= spec_.periodic_from;
+      const auto depth = depth_profile(ps, nullptr, spec_.domain_min[0], spec_.domain_max[0],
+                                       spec_.rho0, spec_.spacing, periodic);
+      const auto w = (*waves_)(depth);
+      row.insert(row.end(), {w.crest_x, w.crest_amplitude});
+      row.insert(row.end(), w.gauges.begin(), w.gauges.end());
+    }
+    if (breaking_) row.insert(row.end(), breaking_row.begin(), breaking_row.end());
+  }
+  if (spec_.still_water || spec_.density_deviation) {
+    double g = 0.0;
+    for (double x : spec_.gravity)
+      g += x * x;
+    const auto s = read_still_water(ps, spec_.domain_min[0], spec_.domain_max[0], floor, spec_.rho0,
+                                    std::sqrt(g), spec_.spacing);
+    if (spec_.still_water) row.insert(row.end(), {s.bed_pressure, s.water_level});
+    if (spec_.density_deviation) row.push_back(s.density_deviation);
+  }
+  if (spec_.centre_of_mass) {
+    // Mass-weighted, in index order (the particles' order depends on the positions only).
+    Vec<D> mx{};
+    double mass = 0.0;
+    for (std::size_t i = 0; i < ps.n_real; ++i) {
+      mx += ps.x[i] * ps.m[i];
+      mass += ps.m[i];
+    }
+    for (int k = 0; k < D; ++k)
+      row.push_back(mass > 0.0 ? mx[k] / mass : 0.0);
+  }
+  return row;
+}
+
+template <int D>
+std::vector<double> CaseProbes<D>::state() const {
+  std::vector<double> out;
+  for (const auto& part : {semi_axes_ ? semi_axes_->state() : std::vector<double>{},
+                           waves_ ? waves_->state() : std::vector<double>{},
+                           breaking_ ? breaking_->state() : std::vector<double>{}}) {
+    out.push_back(static_cast<double>(part.size()));
+    out.insert(out.end(), part.begin(), part.end());
+  }
+  return out;
+}
+
+template <int D>
+void CaseProbes<D>::restore(const std::vector<double>& s) {
+  std::size_t at = 0;
+  const auto next = [&] {
+    std::vector<double> part;
+    if (at >= s.size()) return part;
+    const auto n = static_cast<std::size_t>(s[at++]);
+    for (std::size_t k = 0; k < n && at < s.size(); ++k)
+      part.push_back(s[at++]);
+    return part;
+  };
+  const auto semi = next();
+  const auto wave = next();
+  const auto broken = next();
+  if (semi_axes_) semi_axes_->restore(semi);
+  if (waves_) waves_->restore(wave);
+  if (breaking_) breaking_->restore(broken);
+}
+
+template class CaseProbes<2>;
+template class CaseProbes<3>;
+
+}  // namespace flume
