@@ -163,5 +163,16 @@ TEST(Variant, OneOverrideOrSeveralWithALabel) {
             "(no error)");
 }
 
+TEST(WaveReferences, PlotsTakeDiagnosticsOrProbeColumns) {
+  // validation.diagnostics_plots names a column of diagnostics.csv or of the case's probes.csv
+  // (a gauge's time series); anything else is refused with one line naming the key.
+  const auto ok =
+      test::spec_from(tank_toml("[validation]\ndiagnostics_plots = [\"rho_max\", \"crest_x\"]\n"));
+  EXPECT_EQ(ok.diagnostics_plots.size(), 2u);
+  test::expect_one_line_with(
+      test::error_of(tank_toml("[validation]\ndiagnostics_plots = [\"gauge_1\"]\n")),
+      {"validation.diagnostics_plots", "gauge_1"});
+}
+
 }  // namespace
 }  // namespace flume

@@ -144,7 +144,8 @@ quick_variants = true  # whether validate --quick runs the variants too (false: 
                        # for a case whose runs are long)
 pictures = []          # s: particle pictures (PNG) of every configuration near these times (later than end_time: left out)
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
-diagnostics_plots = []  # diagnostics.csv columns plotted against time for every configuration
+diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted against time for every
+                        # configuration
 
 # [[fluid_blocks]]: at least one; each a body of fluid:
 #   min = {zero}, max = {one} (m), velocity = {zero} (m/s, at the centre), hydrostatic = true,

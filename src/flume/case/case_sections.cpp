@@ -1,7 +1,10 @@
 // The readers of the case file's [probes] and [validation] sections (table_reader.hpp).
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "flume/case/table_reader.hpp"
+#include "flume/sim/diagnostics.hpp"
 #include "flume/validation/variant.hpp"
 
 namespace flume {
@@ -70,6 +73,16 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
   }
   s.picture_field = r.str("validation.picture_field");
   s.diagnostics_plots = r.strings("validation.diagnostics_plots");
+  {
+    // A plotted column must be one that diagnostics.csv or the case's probes.csv will hold.
+    auto known = probe_names(s);
+    const auto diagnostics = s.dimension == 3 ? diagnostics_columns<3>() : diagnostics_columns<2>();
+    known.insert(known.end(), diagnostics.begin(), diagnostics.end());
+    for (const auto& c : s.diagnostics_plots)
+      if (std::find(known.begin(), known.end(), c) == known.end())
+        r.fail("validation.diagnostics_plots",
+               fmt::format("\"{}\": not a column of diagnostics.csv or probes.csv", c));
+  }
   for (const auto& v : s.variants) {
     const Variant variant = parse_variant(v);
     if (variant.overrides.empty() || variant.label.empty())

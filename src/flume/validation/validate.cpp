@@ -111,14 +111,19 @@ void draw_pictures(const std::filesystem::path& out_dir, CaseResult& cr) {
 }
 
 // Each of the case's diagnostics columns against time, one line per completed series (BL Fig 6
-// sets the schemes' momenta side by side).
+// sets the schemes' momenta side by side); a column that diagnostics.csv does not have is
+// taken from probes.csv (a wave gauge's time series).
 void plot_diagnostics(const std::filesystem::path& out_dir, CaseResult& cr) {
   const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_curve.py";
   for (const auto& column : cr.spec.diagnostics_plots) {
     std::string args;
     for (const auto& s : cr.series) {
       if (!s.run.completed) continue;
-      const auto d = io::read_csv(out_dir / cr.spec.name / s.label / "diagnostics.csv");
+      const auto dir = out_dir / cr.spec.name / s.label;
+      auto d = io::read_csv(dir / "diagnostics.csv");
+      if (std::find(d.columns.begin(), d.columns.end(), column) == d.columns.end() &&
+          std::filesystem::exists(dir / "probes.csv"))
+        d = io::read_csv(dir / "probes.csv");
       const auto file = out_dir / fmt::format("{}_{}_{}.csv", cr.spec.name, column, s.label);
       io::CsvTable table(file, {"x", "y"});
       const auto t = d.column("time"), y = d.column(column);
