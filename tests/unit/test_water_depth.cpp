@@ -136,6 +136,35 @@ TEST(WaveProbe, TheCrestIsUnwrappedInAPeriodicTank) {
   EXPECT_EQ(resumed.state(), probe.state());
 }
 
+TEST(WaveProbe, TwoWavesAreTrackedAsTheHighestAndTheHighestOtherCrest) {
+  // Two KdV waves, A = 0.04 m at x = 2.3 m and A = 0.02 m at x = 5.6 m, in a periodic tank of
+  // 8 m: crest 1 is the large one, crest 2 (at least 1 m from it) the small one, each to the
+  // smoothing error of the single-wave test. Then the small one goes round the end (x = 7.9 m,
+  // then 0.4 m): it is tracked at 7.9 and 8.4 m. With the separation as large as the tank's
+  // half there is no second crest (NaN).
+  const double dx = 0.01, rho0 = 1000.0, H = 0.15, L = 8.0;
+  const auto two = [&](double x1, double x2) {
+    return columns(L, dx, rho0, [&](double x) {
+      const auto near = [&](double x0) { return x - x0 - L * std::round((x - x0) / L); };
+      return H + kdv_elevation(0.04, H, near(x1)) + kdv_elevation(0.02, H, near(x2));
+    });
+  };
+  WaveProbe probe(H, {}, 1.0);
+  for (const auto& [x2, expected] : {std::pair{5.6, 5.6}, {7.9, 7.9}, {0.4, 8.4}}) {
+    const auto d = depth_profile(two(2.3, x2), nullptr, 0.0, L, rho0, dx, true);
+    const auto r = probe(d);
+    EXPECT_NEAR(r.crest_x, 2.3, 1e-3);
+    EXPECT_NEAR(r.crest_amplitude, 0.04, 2e-4);
+    EXPECT_NEAR(r.crest2_x, expected, 1e-3) << x2;
+    // the large wave's tail under the small one (sech^2 of 3.3 m / 0.34 m: 1e-8 m) is nothing
+    EXPECT_NEAR(r.crest2_amplitude, 0.02, 2e-4) << x2;
+  }
+  EXPECT_EQ(probe.state().size(), 2u);
+  WaveProbe far(H, {}, 4.01);
+  EXPECT_TRUE(
+      std::isnan(far(depth_profile(two(2.3, 5.6), nullptr, 0.0, L, rho0, dx, true)).crest2_x));
+}
+
 TEST(StillWater, BedPressureLevelAndDensityOfAHydrostaticLayer) {
   // A lattice layer of 15 rows whose pressure is hydrostatic, p = rho0 g (H - y), reads the
   // bed pressure rho0 g H exactly, the level H exactly (n rows have mean height n dx / 2) and

@@ -114,6 +114,8 @@ waves = false          # 2D wave tank (probes/wave_probes.hpp): crest_x (m, wher
                        # periodic tank), crest_amplitude (m, that depth minus still_depth)
 gauges = []            # m along x: wave gauges gauge_1, gauge_2, ... (m, the depth there minus
                        # still_depth); needs waves = true
+second_crest = 0.0     # m: also crest2_x, crest2_amplitude, the highest other crest at least
+                       # this far from the highest (two waves in one tank); 0 = off
 still_depth = 0.0      # m, H of the tank; 0 = the first fluid block's top above domain.min
 still_water = false    # bed_pressure (Pa: the four bottom rows' p + rho0 g y, middle 80 % of
                        # the width) and water_level (m: twice the particles' mean height)

@@ -15,10 +15,10 @@ namespace {
 // separately, with a message naming the probe).
 std::vector<std::string> probe_names(const CaseSpec& s) {
   std::vector<std::string> names{
-      "surge_front",  "column_height", "semi_axis_x",       "semi_axis_y",
-      "bore_front",   "bore_height",   "crest_x",           "crest_amplitude",
-      "bed_pressure", "water_level",   "density_deviation", "centre_x",
-      "centre_y",     "centre_z",      "overturn",          "broken_at"};
+      "surge_front",       "column_height", "semi_axis_x",     "semi_axis_y",  "bore_front",
+      "bore_height",       "crest_x",       "crest_amplitude", "bed_pressure", "water_level",
+      "density_deviation", "centre_x",      "centre_y",        "centre_z",     "overturn",
+      "broken_at",         "crest2_x",      "crest2_amplitude"};
   for (std::size_t g = 0; g < s.gauges.size(); ++g)
     names.push_back(fmt::format("gauge_{}", g + 1));
   return names;
@@ -44,6 +44,8 @@ void read_probes(const Reader& r, CaseSpec& s) {
   for (double xg : s.gauges)
     if (!(xg >= s.domain_min[0] && xg <= s.domain_max[0]))
       r.fail("probes.gauges", fmt::format("{} m: outside the domain along x", xg));
+  s.second_crest = r.non_negative("probes.second_crest");
+  if (s.second_crest > 0.0 && !s.waves) r.fail("probes.second_crest", "needs probes.waves = true");
   s.still_depth = r.non_negative("probes.still_depth");
   if (s.still_depth == 0.0) {
     const auto& b = s.blocks.front();

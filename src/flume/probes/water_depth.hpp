@@ -88,26 +88,50 @@ struct Crest {
   double height = 0.0;  // m of water
 };
 
-// The highest point of the profile: the largest sample, refined by the parabola through it and
-// its two neighbours (its vertex; exact for a profile that is quadratic near the crest).
-inline Crest highest_crest(const DepthProfile& d) {
+namespace detail {
+// Sample c of the profile, folded at walls or wrapped in a periodic tank.
+inline double sample(const DepthProfile& d, long c) {
   const auto n = static_cast<long>(d.eta.size());
-  Crest out;
-  if (n == 0) return out;
-  long top = 0;
-  for (long c = 1; c < n; ++c)
-    if (d.eta[static_cast<std::size_t>(c)] > d.eta[static_cast<std::size_t>(top)]) top = c;
-  const auto e = [&](long c) {
-    if (d.periodic) return d.eta[static_cast<std::size_t>(((c % n) + n) % n)];
-    return d.eta[static_cast<std::size_t>(c < 0 ? -1 - c : c >= n ? 2 * n - 1 - c : c)];
-  };
-  const double em = e(top - 1), e0 = e(top), ep = e(top + 1);
+  if (d.periodic) return d.eta[static_cast<std::size_t>(((c % n) + n) % n)];
+  return d.eta[static_cast<std::size_t>(c < 0 ? -1 - c : c >= n ? 2 * n - 1 - c : c)];
+}
+// The crest at sample `top`: the vertex of the parabola through it and its two neighbours
+// (exact for a profile that is quadratic near the crest).
+inline Crest refine(const DepthProfile& d, long top) {
+  const double em = sample(d, top - 1), e0 = sample(d, top), ep = sample(d, top + 1);
   const double curvature = em - 2.0 * e0 + ep;
   double offset = curvature < 0.0 ? 0.5 * (em - ep) / curvature : 0.0;  // in samples
   offset = std::max(-0.5, std::min(0.5, offset));
-  out.x = d.centre(static_cast<std::size_t>(top)) + offset * d.dx;
-  out.height = e0 - 0.25 * (em - ep) * offset;
-  return out;
+  return {d.centre(static_cast<std::size_t>(top)) + offset * d.dx, e0 - 0.25 * (em - ep) * offset};
+}
+}  // namespace detail
+
+// The highest point of the profile: the largest sample, refined by the parabola through it and
+// its two neighbours.
+inline Crest highest_crest(const DepthProfile& d) {
+  const auto n = static_cast<long>(d.eta.size());
+  if (n == 0) return {};
+  long top = 0;
+  for (long c = 1; c < n; ++c)
+    if (d.eta[static_cast<std::size_t>(c)] > d.eta[static_cast<std::size_t>(top)]) top = c;
+  return detail::refine(d, top);
+}
+
+// The highest local maximum (a sample at least as high as both neighbours) at least `away`
+// from x_avoid (the distance around the tank in a periodic one): a second wave beside the
+// highest crest. NaNs when there is none.
+inline Crest highest_crest_away_from(const DepthProfile& d, double x_avoid, double away) {
+  const auto n = static_cast<long>(d.eta.size());
+  long top = -1;
+  for (long c = 0; c < n; ++c) {
+    double gap = std::abs(d.centre(static_cast<std::size_t>(c)) - x_avoid);
+    if (d.periodic) gap = std::min(gap, d.length() - gap);
+    const double e = d.eta[static_cast<std::size_t>(c)];
+    if (gap < away || e < detail::sample(d, c - 1) || e < detail::sample(d, c + 1)) continue;
+    if (top < 0 || e > d.eta[static_cast<std::size_t>(top)]) top = c;
+  }
+  if (top < 0) return {std::nan(""), std::nan("")};
+  return detail::refine(d, top);
 }
 
 }  // namespace flume

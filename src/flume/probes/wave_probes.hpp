@@ -22,43 +22,61 @@ namespace flume {
 struct WaveReading {
   double crest_x = 0.0;          // m along the tank, unwrapped in a periodic tank
   double crest_amplitude = 0.0;  // m above the still depth
-  std::vector<double> gauges;    // m above the still depth, one per gauge
+  double crest2_x = 0.0;         // the second crest (when asked for), m
+  double crest2_amplitude = 0.0;
+  std::vector<double> gauges;  // m above the still depth, one per gauge
 };
 
 class WaveProbe {
  public:
-  WaveProbe(double still_depth, std::vector<double> gauges)
-      : still_(still_depth), gauges_(std::move(gauges)) {}
+  // second_separation > 0: also track the highest other crest at least that far (m) from the
+  // highest (two waves in one tank, W 6.4.2's interaction).
+  WaveProbe(double still_depth, std::vector<double> gauges, double second_separation = 0.0)
+      : still_(still_depth), gauges_(std::move(gauges)), separation_(second_separation) {}
 
   WaveReading operator()(const DepthProfile& d) {
     WaveReading r;
     const Crest c = highest_crest(d);
-    double x = c.x;
-    if (d.periodic && last_) {
-      const double L = d.length();
-      x += L * std::round((*last_ - x) / L);
-    }
-    last_ = x;
-    r.crest_x = x;
+    r.crest_x = unwrapped(d, c.x, last_);
     r.crest_amplitude = c.height - still_;
+    if (separation_ > 0.0) {
+      const Crest c2 = highest_crest_away_from(d, c.x, separation_);
+      r.crest2_x = std::isfinite(c2.x) ? unwrapped(d, c2.x, last2_) : c2.x;
+      r.crest2_amplitude = c2.height - still_;
+    }
     for (const double xg : gauges_)
       r.gauges.push_back(d.at(xg) - still_);
     return r;
   }
 
-  // The tracker's last unwrapped crest position (a checkpoint's probe state): empty before the
-  // first reading.
+  // The trackers' last unwrapped crest positions (a checkpoint's probe state): empty before
+  // the first reading.
   std::vector<double> state() const {
-    return last_ ? std::vector<double>{*last_} : std::vector<double>{};
+    std::vector<double> s;
+    if (last_) s.push_back(*last_);
+    if (last_ && last2_) s.push_back(*last2_);
+    return s;
   }
   void restore(const std::vector<double>& s) {
-    if (s.size() == 1) last_ = s[0];
+    if (!s.empty()) last_ = s[0];
+    if (s.size() > 1) last2_ = s[1];
   }
 
  private:
+  // x taken as the image x + m L nearest the tracker's last position (a periodic tank).
+  static double unwrapped(const DepthProfile& d, double x, std::optional<double>& last) {
+    if (d.periodic && last) {
+      const double L = d.length();
+      x += L * std::round((*last - x) / L);
+    }
+    last = x;
+    return x;
+  }
+
   double still_;
   std::vector<double> gauges_;
-  std::optional<double> last_;
+  double separation_;
+  std::optional<double> last_, last2_;
 };
 
 // Still water (W 6.5, W-3 of spec/cases.md): a tank at rest under gravity.

@@ -18,7 +18,7 @@ CaseProbes<D>::CaseProbes(const CaseSpec& spec) : spec_(spec) {
     semi_axes_.emplace(
         std::array<double, 2>{0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1])});
   }
-  if (spec.waves) waves_.emplace(spec.still_depth, spec.gauges);
+  if (spec.waves) waves_.emplace(spec.still_depth, spec.gauges, spec.second_crest);
   if (spec.breaking) breaking_.emplace(spec.spacing, spec.breaking_threshold);
 }
 
@@ -31,6 +31,7 @@ std::vector<std::string> CaseProbes<D>::columns() const {
   if (spec_.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
   if (spec_.waves) {
     cols.insert(cols.end(), {"crest_x", "crest_amplitude"});
+    if (spec_.second_crest > 0.0) cols.insert(cols.end(), {"crest2_x", "crest2_amplitude"});
     for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
       cols.push_back("gauge_" + std::to_string(g + 1));
   }
@@ -86,6 +87,7 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
                                        spec_.rho0, spec_.spacing, periodic);
       const auto w = (*waves_)(depth);
       row.insert(row.end(), {w.crest_x, w.crest_amplitude});
+      if (spec_.second_crest > 0.0) row.insert(row.end(), {w.crest2_x, w.crest2_amplitude});
       row.insert(row.end(), w.gauges.begin(), w.gauges.end());
     }
     if (breaking_) row.insert(row.end(), breaking_row.begin(), breaking_row.end());
