@@ -160,6 +160,12 @@ TEST(WaveProbe, TwoWavesAreTrackedAsTheHighestAndTheHighestOtherCrest) {
     EXPECT_NEAR(r.crest2_amplitude, 0.02, 2e-4) << x2;
   }
   EXPECT_EQ(probe.state().size(), 2u);
+  // Only a local maximum is a crest: 0.25 m from the large crest its flank stands at
+  // 0.04 sech^2(0.25 / 0.335) = 0.024 m, higher than the small wave, yet the second crest is
+  // the small wave.
+  WaveProbe close(H, {}, 0.25);
+  EXPECT_NEAR(close(depth_profile(two(2.3, 5.6), nullptr, 0.0, L, rho0, dx, true)).crest2_x, 5.6,
+              1e-3);
   WaveProbe far(H, {}, 4.01);
   EXPECT_TRUE(
       std::isnan(far(depth_profile(two(2.3, 5.6), nullptr, 0.0, L, rho0, dx, true)).crest2_x));
