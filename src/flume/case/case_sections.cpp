@@ -29,16 +29,19 @@ std::vector<std::string> probe_names(const CaseSpec& s) {
 void read_probes(const Reader& r, CaseSpec& s) {
   s.surge_front = r.boolean("probes.surge_front");
   s.column_height = r.boolean("probes.column_height");
-  s.semi_axes = r.boolean("probes.semi_axes");
-  if (s.semi_axes && s.dimension != 2) r.fail("probes.semi_axes", "is for 2D cases");
-  s.bore = r.boolean("probes.bore");
-  if (s.bore && s.dimension != 2) r.fail("probes.bore", "is for 2D cases");
+  // A probe of a 2D tank (x along it, y up), refused in 3D.
+  const auto flag_2d = [&](const std::string& key) {
+    const bool on = r.boolean(key);
+    if (on && s.dimension != 2) r.fail(key, "is for 2D cases");
+    return on;
+  };
+  s.semi_axes = flag_2d("probes.semi_axes");
+  s.bore = flag_2d("probes.bore");
   s.floor_layer = r.positive("probes.floor_layer");
   s.wall_band = r.positive("probes.wall_band");
   s.detach_gap = r.positive("probes.detach_gap");
 
-  s.waves = r.boolean("probes.waves");
-  if (s.waves && s.dimension != 2) r.fail("probes.waves", "is for 2D cases");
+  s.waves = flag_2d("probes.waves");
   s.gauges = r.numbers("probes.gauges");
   if (!s.gauges.empty() && !s.waves) r.fail("probes.gauges", "needs probes.waves = true");
   for (double xg : s.gauges)
@@ -55,8 +58,7 @@ void read_probes(const Reader& r, CaseSpec& s) {
   s.still_water = r.boolean("probes.still_water");
   s.density_deviation = r.boolean("probes.density_deviation");
   s.centre_of_mass = r.boolean("probes.centre_of_mass");
-  s.breaking = r.boolean("probes.breaking");
-  if (s.breaking && s.dimension != 2) r.fail("probes.breaking", "is for 2D cases");
+  s.breaking = flag_2d("probes.breaking");
   s.breaking_threshold = r.positive("probes.breaking_threshold");
 }
 
