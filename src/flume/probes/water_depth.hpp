@@ -54,7 +54,9 @@ struct DepthProfile {
 };
 
 // The depth profile over [x_lo, x_hi] of the real particles (those with in_body[i] set, when
-// given), sampled every dx (the columns: round((x_hi - x_lo) / dx)).
+// given), sampled every dx (the columns: round((x_hi - x_lo) / dx); in a tank whose length is
+// not a whole number of spacings the last column's edge, not the wall, is the upper mirror, a
+// fraction of a spacing off).
 inline DepthProfile depth_profile(const ParticleSet<2>& ps, const std::vector<char>* in_body,
                                   double x_lo, double x_hi, double rho0, double dx, bool periodic) {
   DepthProfile out;
