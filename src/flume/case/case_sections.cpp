@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "flume/case/table_reader.hpp"
-#include "flume/sim/diagnostics.hpp"
+#include "flume/sim/diagnostics_columns.hpp"
 #include "flume/validation/variant.hpp"
 
 namespace flume {

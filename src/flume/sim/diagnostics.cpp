@@ -6,20 +6,6 @@
 namespace flume {
 
 template <int D>
-std::vector<std::string> diagnostics_columns() {
-  std::vector<std::string> c{"time", "step", "dt", "particles", "mass", "momentum_x", "momentum_y"};
-  if constexpr (D == 3) {
-    c.insert(c.end(),
-             {"momentum_z", "angular_momentum_x", "angular_momentum_y", "angular_momentum_z"});
-  } else {
-    c.push_back("angular_momentum");
-  }
-  c.insert(c.end(),
-           {"kinetic_energy", "potential_energy", "internal_energy", "rho_min", "rho_max"});
-  return c;
-}
-
-template <int D>
 std::vector<double> diagnostics_row(const ParticleSet<D>& ps, const Physics<D>& phys, double time,
                                     long step, double dt) {
   double mass = 0.0, ke = 0.0, pe = 0.0, ie = 0.0;
@@ -58,8 +44,6 @@ std::vector<double> diagnostics_row(const ParticleSet<D>& ps, const Physics<D>& 
   return row;
 }
 
-template std::vector<std::string> diagnostics_columns<2>();
-template std::vector<std::string> diagnostics_columns<3>();
 template std::vector<double> diagnostics_row<2>(const ParticleSet<2>&, const Physics<2>&, double,
                                                 long, double);
 template std::vector<double> diagnostics_row<3>(const ParticleSet<3>&, const Physics<3>&, double,

@@ -11,11 +11,9 @@
 
 #include "flume/core/particle_set.hpp"
 #include "flume/schemes/physics.hpp"
+#include "flume/sim/diagnostics_columns.hpp"
 
 namespace flume {
-
-template <int D>
-std::vector<std::string> diagnostics_columns();
 
 // One row matching diagnostics_columns<D>(): time, step, dt, particles, then the totals.
 template <int D>
