@@ -295,10 +295,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   } else if (s.sound_speed > 0.0) {
     c0 = s.sound_speed;
   } else {
-    double g = 0.0;
-    for (double x : s.gravity)
-      g += x * x;
-    g = std::sqrt(g);
+    const double g = gravity_magnitude(s);
     if (u_max == 0.0) u_max = std::sqrt(2.0 * g * tallest);
     if (!(u_max > 0.0))
       r.fail("eos.sound_speed",

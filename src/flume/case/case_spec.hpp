@@ -3,6 +3,7 @@
 // builds a CaseSpec; the library builds the simulation from it.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -179,5 +180,13 @@ struct CaseSpec {
   std::vector<CurveCheck> curves;
   std::vector<ProfileCheck> profiles;
 };
+
+// |g|, m/s^2: the length of the case's gravity vector.
+inline double gravity_magnitude(const CaseSpec& spec) {
+  double g2 = 0.0;
+  for (double x : spec.gravity)
+    g2 += x * x;
+  return std::sqrt(g2);
+}
 
 }  // namespace flume

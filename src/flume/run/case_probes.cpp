@@ -93,11 +93,8 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
     if (breaking_) row.insert(row.end(), breaking_row.begin(), breaking_row.end());
   }
   if (spec_.still_water || spec_.density_deviation) {
-    double g = 0.0;
-    for (double x : spec_.gravity)
-      g += x * x;
     const auto s = read_still_water(ps, spec_.domain_min[0], spec_.domain_max[0], floor, spec_.rho0,
-                                    std::sqrt(g), spec_.spacing);
+                                    gravity_magnitude(spec_), spec_.spacing);
     if (spec_.still_water) row.insert(row.end(), {s.bed_pressure, s.water_level});
     if (spec_.density_deviation) row.push_back(s.density_deviation);
   }

@@ -64,13 +64,6 @@ io::CsvData bore_reference(const CaseSpec& spec) {
   return out;
 }
 
-double gravity_of(const CaseSpec& spec) {
-  double g2 = 0.0;
-  for (double x : spec.gravity)
-    g2 += x * x;
-  return std::sqrt(g2);
-}
-
 // The run's output times inside the check's window (where a window statistic is compared).
 std::vector<double> window_times(const CurveCheck& check, const io::CsvData& probes) {
   const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
@@ -84,7 +77,7 @@ std::vector<double> window_times(const CurveCheck& check, const io::CsvData& pro
 // run's own output times (its last time is the end time to round-off, which a grid of
 // multiples of the interval could miss by an ulp and so leave a window uncovered).
 io::CsvData still_water_reference(const CaseSpec& spec, const io::CsvData& probes) {
-  const double g = gravity_of(spec), h = spec.still_depth;
+  const double g = gravity_magnitude(spec), h = spec.still_depth;
   io::CsvData out;
   out.columns = {"t", "bed_pressure", "water_level", "zero"};
   for (double t : probes.column("time"))
@@ -97,7 +90,7 @@ io::CsvData still_water_reference(const CaseSpec& spec, const io::CsvData& probe
 // first point, so that its slope is that speed).
 io::CsvData kdv_reference(const CaseSpec& spec, const CurveCheck& check,
                           const io::CsvData& probes) {
-  const double g = gravity_of(spec), h = spec.still_depth;
+  const double g = gravity_magnitude(spec), h = spec.still_depth;
   const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
   const auto t = probes.column("time");
   const double speed =
@@ -132,7 +125,7 @@ io::CsvData free_fall_reference(const CaseSpec& spec, const io::CsvData& probes)
   };
   CaseSpec last = spec;
   last.blocks = {spec.blocks.back()};
-  const double f = mass_of(last) / mass_of(spec), g = gravity_of(spec);
+  const double f = mass_of(last) / mass_of(spec), g = gravity_magnitude(spec);
   const auto t = probes.column("time"), y = probes.column("centre_y");
   io::CsvData out;
   out.columns = {"t", "centre_y"};
