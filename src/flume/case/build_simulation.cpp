@@ -211,6 +211,29 @@ std::vector<Vec<D>> block_positions(const FluidBlock& block, double dx) {
 }  // namespace
 
 template <int D>
+RepulsiveWalls<D> build_repulsive_walls(const CaseSpec& spec, const Physics<D>& phys) {
+  std::vector<RepulsiveWall<D>> walls;
+  for (const RepulsiveWallSpec& ws : spec.repulsive_walls) {
+    RepulsiveWall<D> w;
+    for (int k = 0; k < D; ++k) {
+      w.from[k] = ws.from[static_cast<std::size_t>(k)];
+      w.to[k] = ws.to[static_cast<std::size_t>(k)];
+    }
+    w.force = ws.force == "lennard_jones" ? Repulsion::lennard_jones : Repulsion::monaghan_kos;
+    w.spacing = ws.spacing;
+    w.lennard_jones =
+        LennardJonesW67{ws.strength, ws.cutoff, ws.power_repulsive, ws.power_attractive};
+    w.sound_speed = phys.eos.reference_sound_speed();
+    w.put_back_distance = ws.put_back_distance;
+    w.clearance = ws.clearance;
+    w.paddle =
+        PistonFlapW69{ws.hinge_depth, ws.reference_height, ws.stroke, ws.frequency, ws.phase};
+    walls.push_back(w);
+  }
+  return RepulsiveWalls<D>(std::move(walls));
+}
+
+template <int D>
 ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   ParticleSet<D> ps;
   // No optional field yet: the Simulation allocates those its scheme uses (use_only). Filled
@@ -221,9 +244,14 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
   std::int64_t next_id = 0;
   std::vector<std::vector<Vec<D>>> positions;
   std::size_t particles = 0;  // reserved up front: growth by doubling would inflate the peak memory
+  // Repulsive walls (slopes, a paddle) cut the blocks: no particle behind one, or nearer than
+  // its clearance (repulsive_walls.hpp).
+  const RepulsiveWalls<D> repulsive = build_repulsive_walls<D>(spec, phys);
   for (const auto& block : spec.blocks) {
     positions.push_back(block_positions<D>(block, block.spacing > 0.0 ? block.spacing : dx));
-    particles += positions.back().size();
+    auto& xs = positions.back();
+    std::erase_if(xs, [&](const Vec<D>& x) { return repulsive.blocked(x); });
+    particles += xs.size();
   }
   ps.reserve(particles);
   for (std::size_t b = 0; b < spec.blocks.size(); ++b) {
@@ -285,11 +313,14 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   config.density_band_lo = spec.density_band_lo;
   config.density_band_hi = spec.density_band_hi;
   config.min_dt_ratio = spec.min_dt_ratio;
-  return Simulation<D>(build_particles<D>(spec, phys), walls, std::move(scheme), phys, config);
+  return Simulation<D>(build_particles<D>(spec, phys), walls, std::move(scheme), phys, config,
+                       build_repulsive_walls<D>(spec, phys));
 }
 
 template Physics<2> build_physics<2>(const CaseSpec&);
 template Physics<3> build_physics<3>(const CaseSpec&);
+template RepulsiveWalls<2> build_repulsive_walls<2>(const CaseSpec&, const Physics<2>&);
+template RepulsiveWalls<3> build_repulsive_walls<3>(const CaseSpec&, const Physics<3>&);
 template ParticleSet<2> build_particles<2>(const CaseSpec&, const Physics<2>&);
 template ParticleSet<3> build_particles<3>(const CaseSpec&, const Physics<3>&);
 template Simulation<2> build_simulation<2>(const CaseSpec&);

@@ -10,6 +10,10 @@ namespace flume {
 template <int D>
 Physics<D> build_physics(const CaseSpec& spec);
 
+// The case's [[repulsive_walls]] (slopes, paddles), placed at t = 0.
+template <int D>
+RepulsiveWalls<D> build_repulsive_walls(const CaseSpec& spec, const Physics<D>& phys);
+
 template <int D>
 ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys);
 

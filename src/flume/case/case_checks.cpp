@@ -305,6 +305,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   }
   s.sound_speed = c0;
   s.bulk_modulus = s.rho0 * c0 * c0 / s.gamma;  // 0 for a gas
+  read_repulsive_walls(r, t, s);
 
   s.output_interval = r.positive("output.interval");
   s.snapshot_interval = r.non_negative("output.snapshot_interval");

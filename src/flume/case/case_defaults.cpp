@@ -119,12 +119,20 @@ second_crest = 0.0     # m: also crest2_x, crest2_amplitude, the highest other c
 still_depth = 0.0      # m, H of the tank; 0 = the first fluid block's top above domain.min
 still_water = false    # bed_pressure (Pa: the four bottom rows' p + rho0 g y, middle 80 % of
                        # the width) and water_level (m: twice the particles' mean height)
+bed_span = []          # m, [x_lo, x_hi]: where bed_pressure is read instead (a flat bed
+                       # before a beach); [] = the middle 80 % of the tank
 density_deviation = false  # density_deviation: max |rho - rho0| / rho0 over the particles
 centre_of_mass = false # centre_x, centre_y (, centre_z): the water's centre of mass, m
 breaking = false       # 2D wave tank (probes/breaking.hpp): overturn (m, the tallest air gap under
                        # water in any column two spacings wide of the main body) and broken_at
                        # (s, the first time it exceeded breaking_threshold spacings; 0 before)
+                       # and broken_x (m, the column where it did; 0 before)
 breaking_threshold = 4.0  # spacings
+beach_slope = 0.0      # s of a plane beach (rise / run; 0 = none): with waves = true, the
+                       # columns incident_amplitude (m, the crest amplitude at the last reading
+                       # before the crest reached beach_toe), grilli_s0 (W (6.20) for it) and
+                       # grilli_breaks (1 if A / H > 16.9 s^2, W (6.19), else 0)
+beach_toe = 0.0        # m along x: where the beach starts
 
 [checkpoint]           # HDF5 checkpoints in checkpoints/ of the run directory (flume resume)
 every_steps = 0        # steps between checkpoints; 0 = not by steps
@@ -172,6 +180,21 @@ diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted agains
 #   velocity = 0.0 (m/s, along the axis), amplitude = 0.0 (m), period = 0.0 (s): the wall stands
 #   at its domain position + velocity t + amplitude sin(2 pi t / period). Its ghosts mirror the
 #   fluid's velocity relative to the wall.
+# [[repulsive_walls]]: a wall of repulsive boundary particles (W 6.2, 2D): a plane slope at any
+#   angle, or a paddle. from = [x, y], to = [x, y] (m): a straight wall with the fluid on its
+#   left as one walks from `from` to `to` (a beach rising to the right runs from its toe up);
+#   clearance = 0.0 (m: no fluid particle starts behind it or nearer than this; 0 = the force's
+#   reach, 2h for monaghan_kos and cutoff for lennard_jones, where water at rest settles).
+#   force = "monaghan_kos" (W (6.10)-(6.12), q = y / 2h, A = 0.01 c^2 / h: a smooth wall) or
+#   "lennard_jones" (W (6.7): strength = D, m^2/s^2, 0 = 5 g H with H the tallest fluid
+#   block; cutoff = r0, m, 0 = spacing; powers = [p1, p2], p1 > p2: a rugged wall);
+#   spacing = 0.0 (m, the boundary particles' spacing; 0 = particles.spacing);
+#   put_back_distance = 0.5 (spacings: a particle that crosses the wall is put back this far in
+#   front of it, W (6.8), its normal velocity relative to the wall mirrored).
+#   The piston-flap paddle W (6.9): stroke = 0.0 (A, m; 0 = a fixed wall), frequency = 0.0
+#   (f, Hz), phase = 0.0 (rad: A(t) = A cos(2 pi f t + phase); W's is 0, -pi/2 starts at rest),
+#   hinge_depth = 0.1344 (alpha0, m), reference_height = 0.15 (y0, m): a point of the wall at
+#   height y above `from` moves along x by (1/2) ((y + alpha0) / (y0 + alpha0)) A(t).
 # [[validation.curves]]: a probe compared with a reference curve:
 #   probe = "surge_front", label = "", reference = "path.csv" (relative to this file),
 #   reference_x = "T", reference_y = "Z", source = "", value_scale = 1.0 (m),
@@ -233,6 +256,16 @@ const std::string& fluid_block_defaults(int dimension) {
 
 const std::string& moving_wall_defaults() {
   static const std::string d = "side = \"\"\nvelocity = 0.0\namplitude = 0.0\nperiod = 0.0\n";
+  return d;
+}
+
+const std::string& repulsive_wall_defaults() {
+  static const std::string d =
+      "from = [0.0, 0.0]\nto = [0.0, 0.0]\nforce = \"monaghan_kos\"\nspacing = 0.0\n"
+      "strength = 0.0\ncutoff = 0.0\npowers = [12.0, 4.0]\nput_back_distance = 0.5\n"
+      "clearance = 0.0\n"
+      "stroke = 0.0\nfrequency = 0.0\nphase = 0.0\nhinge_depth = 0.1344\n"
+      "reference_height = 0.15\n";
   return d;
 }
 

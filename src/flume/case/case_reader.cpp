@@ -19,12 +19,13 @@ const std::string& fluid_block_defaults(int dimension);
 const std::string& curve_defaults();
 const std::string& profile_defaults();
 const std::string& moving_wall_defaults();
+const std::string& repulsive_wall_defaults();
 
 namespace {
 
 // Arrays of tables are not in the defaults table itself; each element has its own defaults.
-constexpr const char* kTableArrays[] = {"fluid_blocks", "moving_walls", "validation.curves",
-                                        "validation.profiles"};
+constexpr const char* kTableArrays[] = {"fluid_blocks", "moving_walls", "repulsive_walls",
+                                        "validation.curves", "validation.profiles"};
 
 bool is_table_array_key(const std::string& path) {
   return std::find(std::begin(kTableArrays), std::end(kTableArrays), path) !=
@@ -34,6 +35,7 @@ bool is_table_array_key(const std::string& path) {
 const std::string& element_defaults(const std::string& path, int dim) {
   if (path == "fluid_blocks") return fluid_block_defaults(dim);
   if (path == "moving_walls") return moving_wall_defaults();
+  if (path == "repulsive_walls") return repulsive_wall_defaults();
   if (path == "validation.profiles") return profile_defaults();
   return curve_defaults();
 }
@@ -167,7 +169,8 @@ class Checker {
     std::vector<std::string> keys;
     for (const auto& [k, v] : defaults)
       keys.emplace_back(k.str());
-    if (prefix.empty()) keys.insert(keys.end(), {"fluid_blocks", "moving_walls"});
+    if (prefix.empty())
+      keys.insert(keys.end(), {"fluid_blocks", "moving_walls", "repulsive_walls"});
     if (prefix == "validation") keys.insert(keys.end(), {"curves", "profiles"});
     return fmt::format("{}", fmt::join(keys, ", "));
   }

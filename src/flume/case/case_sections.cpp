@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "flume/case/table_reader.hpp"
 #include "flume/sim/diagnostics_columns.hpp"
@@ -15,10 +16,12 @@ namespace {
 // separately, with a message naming the probe).
 std::vector<std::string> probe_names(const CaseSpec& s) {
   std::vector<std::string> names{
-      "surge_front",       "column_height", "semi_axis_x",     "semi_axis_y",  "bore_front",
-      "bore_height",       "crest_x",       "crest_amplitude", "bed_pressure", "water_level",
-      "density_deviation", "centre_x",      "centre_y",        "centre_z",     "overturn",
-      "broken_at",         "crest2_x",      "crest2_amplitude"};
+      "surge_front",  "column_height",    "semi_axis_x",       "semi_axis_y",
+      "bore_front",   "bore_height",      "crest_x",           "crest_amplitude",
+      "bed_pressure", "water_level",      "density_deviation", "centre_x",
+      "centre_y",     "centre_z",         "overturn",          "broken_at",
+      "crest2_x",     "crest2_amplitude", "broken_x",          "incident_amplitude",
+      "grilli_s0",    "grilli_breaks"};
   for (std::size_t g = 0; g < s.gauges.size(); ++g)
     names.push_back(fmt::format("gauge_{}", g + 1));
   return names;
@@ -60,6 +63,81 @@ void read_probes(const Reader& r, CaseSpec& s) {
   s.centre_of_mass = r.boolean("probes.centre_of_mass");
   s.breaking = flag_2d("probes.breaking");
   s.breaking_threshold = r.positive("probes.breaking_threshold");
+  s.bed_span = r.numbers("probes.bed_span");
+  if (!s.bed_span.empty() && (s.bed_span.size() != 2 || !(s.bed_span[0] < s.bed_span[1]) ||
+                              s.bed_span[0] < s.domain_min[0] || s.bed_span[1] > s.domain_max[0]))
+    r.fail("probes.bed_span", "must be [x_lo, x_hi] with x_lo < x_hi inside the domain along x");
+  s.beach_slope = r.non_negative("probes.beach_slope");
+  s.beach_toe = r.num("probes.beach_toe");
+  if (s.beach_slope > 0.0 && !s.waves) r.fail("probes.beach_slope", "needs probes.waves = true");
+  if (s.beach_slope > 0.0 && !(s.beach_toe > s.domain_min[0] && s.beach_toe < s.domain_max[0]))
+    r.fail("probes.beach_toe", "must lie inside the domain along x");
+}
+
+void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
+  const auto* walls = t.at_path("repulsive_walls").as_array();
+  if (!walls) return;
+  const int dim = s.dimension;
+  double tallest = 0.0;
+  for (const auto& b : s.blocks)
+    tallest = std::max(tallest, b.max.back() + b.surface_amplitude - b.min.back());
+  for (std::size_t w = 0; w < walls->size(); ++w) {
+    const std::string key = fmt::format("repulsive_walls[{}]", w);
+    if (dim != 2) r.fail(key, "repulsive walls are for 2D cases");
+    if (s.eos != "tait")
+      r.fail(key, "needs eos.kind = \"tait\" (the wall's push scales with its sound speed)");
+    RepulsiveWallSpec ws;
+    ws.from = r.vec(key + ".from");
+    ws.to = r.vec(key + ".to");
+    const double length = std::hypot(ws.to[0] - ws.from[0], ws.to[1] - ws.from[1]);
+    if (!(length > 0.0)) r.fail(key + ".to", "must differ from `from` (a wall has a length)");
+    for (const auto* end : {&ws.from, &ws.to})
+      for (int k = 0; k < dim; ++k)
+        if (!((*end)[k] >= s.domain_min[k] && (*end)[k] <= s.domain_max[k]))
+          r.fail(key + (end == &ws.from ? ".from" : ".to"), "must lie inside the domain box");
+    ws.force = r.one_of(key + ".force", {"monaghan_kos", "lennard_jones"});
+    ws.spacing = r.non_negative(key + ".spacing");
+    if (ws.spacing == 0.0) ws.spacing = s.spacing;
+    if (ws.spacing > 0.5 * length)
+      r.fail(key + ".spacing", fmt::format("= {} m: a wall {:.4g} m long needs a smaller spacing",
+                                           ws.spacing, length));
+    ws.strength = r.non_negative(key + ".strength");
+    if (ws.strength == 0.0) ws.strength = 5.0 * gravity_magnitude(s) * tallest;
+    ws.cutoff = r.non_negative(key + ".cutoff");
+    if (ws.cutoff == 0.0) ws.cutoff = ws.spacing;
+    const auto powers = r.numbers(key + ".powers");
+    if (powers.size() != 2 || !(powers[0] > powers[1]) || !(powers[1] > 0.0))
+      r.fail(key + ".powers", "must be [p1, p2] with p1 > p2 > 0 (p1 = p2 is no force)");
+    ws.power_repulsive = powers[0];
+    ws.power_attractive = powers[1];
+    if (ws.force == "lennard_jones" && !(ws.strength > 0.0))
+      r.fail(key + ".strength", "cannot be derived without gravity and water: set it (m^2/s^2)");
+    ws.put_back_distance = r.in_range(key + ".put_back_distance", 0.01, 2.0) * s.spacing;
+    ws.clearance = r.non_negative(key + ".clearance");
+    if (ws.clearance == 0.0)
+      ws.clearance = ws.force == "lennard_jones" ? ws.cutoff : 2.0 * s.h_over_dx * s.spacing;
+    ws.stroke = r.num(key + ".stroke");
+    ws.frequency = r.non_negative(key + ".frequency");
+    ws.phase = r.num(key + ".phase");
+    ws.hinge_depth = r.non_negative(key + ".hinge_depth");
+    ws.reference_height = r.positive(key + ".reference_height");
+    if (!std::isfinite(ws.stroke) || !std::isfinite(ws.phase))
+      r.fail(key + ".stroke", "and phase must be finite");
+    if (ws.stroke != 0.0 && !(ws.frequency > 0.0))
+      r.fail(key + ".frequency", "must be > 0 for a paddle (stroke is not 0)");
+    if (ws.stroke != 0.0) {
+      // The paddle must stay inside the box: its top moves by up to the lever times |A|.
+      const double top = std::abs(ws.to[1] - ws.from[1]);
+      const double reach = 0.5 * (top + ws.hinge_depth) / (ws.reference_height + ws.hinge_depth) *
+                           std::abs(ws.stroke);
+      for (const auto* end : {&ws.from, &ws.to})
+        if ((*end)[0] - reach < s.domain_min[0] || (*end)[0] + reach > s.domain_max[0])
+          r.fail(
+              key + ".stroke",
+              fmt::format("moves the paddle up to {:.4g} m along x, out of the domain box", reach));
+    }
+    s.repulsive_walls.push_back(ws);
+  }
 }
 
 void read_validation(const Reader& r, const toml::table& t, const std::filesystem::path& file,
@@ -101,16 +179,18 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       const std::string key = fmt::format("validation.curves[{}]", c);
       CurveCheck cc;
       cc.probe = r.one_of(key + ".probe", probe_names(s));
-      const bool enabled = cc.probe == "surge_front"                           ? s.surge_front
-                           : cc.probe == "column_height"                       ? s.column_height
-                           : cc.probe.starts_with("bore")                      ? s.bore
-                           : cc.probe.starts_with("semi")                      ? s.semi_axes
-                           : cc.probe.starts_with("crest")                     ? s.waves
-                           : cc.probe.starts_with("gauge")                     ? s.waves
-                           : cc.probe.starts_with("density")                   ? s.density_deviation
-                           : cc.probe.starts_with("centre")                    ? s.centre_of_mass
-                           : cc.probe == "overturn" || cc.probe == "broken_at" ? s.breaking
-                                                                               : s.still_water;
+      const bool enabled = cc.probe == "surge_front"         ? s.surge_front
+                           : cc.probe == "column_height"     ? s.column_height
+                           : cc.probe.starts_with("bore")    ? s.bore
+                           : cc.probe.starts_with("semi")    ? s.semi_axes
+                           : cc.probe.starts_with("crest")   ? s.waves
+                           : cc.probe.starts_with("gauge")   ? s.waves
+                           : cc.probe.starts_with("density") ? s.density_deviation
+                           : cc.probe.starts_with("centre")  ? s.centre_of_mass
+                           : cc.probe == "overturn" || cc.probe.starts_with("broken") ? s.breaking
+                           : cc.probe == "incident_amplitude" || cc.probe.starts_with("grilli")
+                               ? s.beach_slope > 0.0
+                               : s.still_water;
       if (!enabled)
         r.fail(key + ".probe",
                fmt::format("= \"{}\": the case's [probes] do not measure it", cc.probe));

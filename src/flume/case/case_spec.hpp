@@ -44,6 +44,24 @@ struct MovingWall {
   double period = 0.0;     // s
 };
 
+// A wall of repulsive boundary particles (boundaries/repulsive_walls.hpp, 2D): a plane slope, or
+// the piston-flap paddle W (6.9) when stroke is not 0.
+struct RepulsiveWallSpec {
+  std::vector<double> from, to;        // m, the fluid on the left walking from `from` to `to`
+  std::string force = "monaghan_kos";  // W (6.10)-(6.12), or "lennard_jones" W (6.7)
+  double spacing = 0.0;                // m, the boundary particles' spacing (resolved)
+  double strength = 0.0;               // D of W (6.7), m^2/s^2 (resolved)
+  double cutoff = 0.0;                 // r0 of W (6.7), m (resolved)
+  double power_repulsive = 12.0, power_attractive = 4.0;  // p1, p2 of W (6.7)
+  double put_back_distance = 0.0;                         // Delta z of W (6.8), m (resolved)
+  double clearance = 0.0;       // m: no fluid particle starts nearer (resolved: the force's reach)
+  double stroke = 0.0;          // A of W (6.9), m; 0: no motion
+  double frequency = 0.0;       // f, Hz
+  double phase = 0.0;           // rad
+  double hinge_depth = 0.1344;  // alpha0, m
+  double reference_height = 0.15;  // y0, m
+};
+
 // A probe curve compared with a reference data set (validate).
 struct CurveCheck {
   std::string probe;                // probes.csv column
@@ -130,6 +148,7 @@ struct CaseSpec {
   double periodic_from = 0.0;  // s: periodic sides are free-slip walls before this time (W 6.4.2)
   std::vector<FluidBlock> blocks;
   std::vector<MovingWall> moving_walls;
+  std::vector<RepulsiveWallSpec> repulsive_walls;
 
   // [output]
   double output_interval = 0.01;    // s, diagnostics and probes
@@ -157,6 +176,9 @@ struct CaseSpec {
   bool centre_of_mass = false;      // centre_x, centre_y(, centre_z): the water's centre of mass
   bool breaking = false;            // overturn, broken_at (probes/breaking.hpp, 2D)
   double breaking_threshold = 4.0;  // spacings: an air gap under water this tall is breaking
+  std::vector<double> bed_span;     // m, [x_lo, x_hi] of bed_pressure; empty: middle 80 %
+  double beach_slope = 0.0;         // s: incident_amplitude, grilli_s0, grilli_breaks; 0 = off
+  double beach_toe = 0.0;           // m
 
   // [checkpoint] (run/checkpoint.hpp)
   long checkpoint_every_steps = 0;      // steps between checkpoints; 0 = not by steps

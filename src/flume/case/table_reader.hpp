@@ -100,6 +100,8 @@ inline const char* axis_name(int k) {
 // [validation] with its curves and profiles (after the fluid blocks and the output section,
 // whose values they check against).
 void read_probes(const Reader& r, CaseSpec& s);
+// [[repulsive_walls]] (after the fluid blocks and the sound speed, which its defaults use).
+void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s);
 void read_validation(const Reader& r, const toml::table& t, const std::filesystem::path& file,
                      CaseSpec& s);
 

@@ -10,10 +10,17 @@
 // exceeds `threshold` spacings (default 4): `broken_at`, the time it first did (0 before).
 // This sees a plunging breaker as its jet leaves the face, slightly after the face passes
 // vertical (the criterion of W 6.4.2); a spilling breaker, whose crest never overturns over a
-// tube of air, is not seen by it.
+// tube of air, is not seen by it. Where it broke, `broken_x` (m), is the centre of the column
+// that held the gap at broken_at (0 before).
+// A gap counts only with water below it too: its lower side at least two spacings above the
+// column's lowest particle. A tube of air has water on both sides; a gap at the foot of a column
+// has a wall under it, e.g. at the toe of a beach of repulsive particles, where the beach holds
+// the water up to its reach off its plane (repulsive_walls.hpp) while the bed's mirror lets it
+// sit half a spacing off: that pocket is not breaking.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -22,43 +29,55 @@
 
 namespace flume {
 
-// The largest gap (m) between successive heights of the particles of `in_body` within any
-// column of width `column` (columns from x_lo).
-inline double largest_air_gap(const ParticleSet<2>& ps, const std::vector<char>& in_body,
-                              double x_lo, double column) {
+struct AirGap {
+  double gap = 0.0;  // m
+  double x = 0.0;    // m, the centre of the column that holds it
+};
+
+// The largest gap between successive heights of the particles of `in_body` within any column
+// of width `column` (columns from x_lo) whose lower side stands at least `above` (m) over the
+// column's lowest particle, and where it is (the first such column along x).
+inline AirGap largest_air_gap(const ParticleSet<2>& ps, const std::vector<char>& in_body,
+                              double x_lo, double column, double above = 0.0) {
   std::map<long, std::vector<double>> heights;
   for (std::size_t i = 0; i < ps.n_real; ++i)
     if (in_body[i])
       heights[static_cast<long>(std::floor((ps.x[i][0] - x_lo) / column))].push_back(ps.x[i][1]);
-  double gap = 0.0;
+  AirGap largest;
   for (auto& [c, ys] : heights) {
     std::sort(ys.begin(), ys.end());
     for (std::size_t k = 1; k < ys.size(); ++k)
-      gap = std::max(gap, ys[k] - ys[k - 1]);
+      if (ys[k - 1] - ys[0] >= above && ys[k] - ys[k - 1] > largest.gap)
+        largest = {ys[k] - ys[k - 1], x_lo + (static_cast<double>(c) + 0.5) * column};
   }
-  return gap;
+  return largest;
 }
 
 class BreakingProbe {
  public:
   BreakingProbe(double spacing, double threshold) : dx_(spacing), threshold_(threshold) {}
 
-  // {overturn (m), broken_at (s; 0 until it has broken)} at time t.
-  std::array<double, 2> operator()(const ParticleSet<2>& ps, const std::vector<char>& in_body,
+  // {overturn (m), broken_at (s), broken_x (m); both 0 until it has broken} at time t.
+  std::array<double, 3> operator()(const ParticleSet<2>& ps, const std::vector<char>& in_body,
                                    double x_lo, double t) {
-    const double gap = largest_air_gap(ps, in_body, x_lo, 2.0 * dx_);
-    if (broken_at_ == 0.0 && gap > threshold_ * dx_) broken_at_ = t;
-    return {gap, broken_at_};
+    const AirGap g = largest_air_gap(ps, in_body, x_lo, 2.0 * dx_, 2.0 * dx_);
+    if (broken_at_ == 0.0 && g.gap > threshold_ * dx_) {
+      broken_at_ = t;
+      broken_x_ = g.x;
+    }
+    return {g.gap, broken_at_, broken_x_};
   }
 
-  std::vector<double> state() const { return {broken_at_}; }
+  std::vector<double> state() const { return {broken_at_, broken_x_}; }
   void restore(const std::vector<double>& s) {
-    if (s.size() == 1) broken_at_ = s[0];
+    if (s.size() >= 1) broken_at_ = s[0];
+    if (s.size() >= 2) broken_x_ = s[1];
   }
 
  private:
   double dx_, threshold_;
   double broken_at_ = 0.0;
+  double broken_x_ = 0.0;
 };
 
 }  // namespace flume

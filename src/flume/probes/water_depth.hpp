@@ -10,9 +10,16 @@
 // a solitary wave of width lambda by about dx^2 / lambda^2: 1e-3 at lambda = 30 dx.
 // Ends: mirror walls fold the B-spline's share beyond a wall back into the tank (the wall's ghost
 // water), a periodic tank wraps it around.
+// Over a beach (a wall of repulsive particles, repulsive_walls.hpp) the masses give the water's
+// thickness; given the bed's height at each sample, eta is then the surface's elevation, the
+// bed's height plus the thickness where the water is at least half a spacing thick, and 0 where
+// the beach is dry (no crest, a gauge reading -H). The wall holds the water off by up to its
+// reach (2h for Monaghan-Kos), so over a beach eta reads low by about that gap; and a thin sheet
+// running up the beach reads its elevation, which can exceed a crest's once a wave runs up.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -58,7 +65,8 @@ struct DepthProfile {
 // not a whole number of spacings the last column's edge, not the wall, is the upper mirror, a
 // fraction of a spacing off).
 inline DepthProfile depth_profile(const ParticleSet<2>& ps, const std::vector<char>* in_body,
-                                  double x_lo, double x_hi, double rho0, double dx, bool periodic) {
+                                  double x_lo, double x_hi, double rho0, double dx, bool periodic,
+                                  const std::vector<double>* bed = nullptr) {
   DepthProfile out;
   out.x_lo = x_lo;
   out.dx = dx;
@@ -82,7 +90,29 @@ inline DepthProfile depth_profile(const ParticleSet<2>& ps, const std::vector<ch
       if (b > 0.0) out.eta[static_cast<std::size_t>(fold(c))] += amount * b;
     }
   }
+  if (bed && bed->size() == out.eta.size())
+    for (std::size_t c = 0; c < out.eta.size(); ++c)
+      if ((*bed)[c] > 0.0) out.eta[c] = out.eta[c] >= 0.5 * dx ? out.eta[c] + (*bed)[c] : 0.0;
   return out;
+}
+
+// The bed's height above the floor at the centres of the columns of depth_profile over
+// [x_lo, x_hi] (spacing dx): the highest of the beaches over each (segments from (x0, y0) to
+// (x1, y1), taken over their x-range), 0 where there is none.
+inline std::vector<double> bed_heights(const std::vector<std::array<double, 4>>& beaches,
+                                       double x_lo, double x_hi, double dx, double floor) {
+  const auto n = std::max(1L, std::lround((x_hi - x_lo) / dx));
+  std::vector<double> bed(static_cast<std::size_t>(n), 0.0);
+  for (long c = 0; c < n; ++c) {
+    const double x = x_lo + (static_cast<double>(c) + 0.5) * dx;
+    for (const auto& [x0, y0, x1, y1] : beaches) {
+      const double lo = std::min(x0, x1), hi = std::max(x0, x1);
+      if (!(x >= lo && x <= hi) || hi == lo) continue;
+      const double y = y0 + (y1 - y0) * (x - x0) / (x1 - x0) - floor;
+      bed[static_cast<std::size_t>(c)] = std::max(bed[static_cast<std::size_t>(c)], y);
+    }
+  }
+  return bed;
 }
 
 struct Crest {

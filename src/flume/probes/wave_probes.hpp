@@ -11,11 +11,13 @@
 // off Fig 6.11(b) over t = 3-7 s).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
 
 #include "flume/probes/water_depth.hpp"
+#include "flume/theory/solitary_wave.hpp"
 
 namespace flume {
 
@@ -79,6 +81,41 @@ class WaveProbe {
   std::optional<double> last_, last2_;
 };
 
+// A solitary wave meeting a plane beach of slope s whose toe stands at x_toe (W 6.4.2, W-8 of
+// spec/cases.md): its incident amplitude A, the crest's amplitude at the last reading before the
+// crest came within one still depth H of the toe (kept from then on: nearer, the wave shoals and
+// meets what the beach reflects; over the beach the wall's stand-off makes the surface read low,
+// water_depth.hpp), and Grilli's prediction for it:
+// breaking if A / H > 16.9 s^2 (W (6.19)), S0 = 1.521 s / sqrt(A / H) (W (6.20)), whose
+// Table 6.2 ranges give the breaker type (theory/solitary_wave.hpp).
+class ShoalingProbe {
+ public:
+  ShoalingProbe(double still_depth, double slope, double toe)
+      : still_(still_depth), slope_(slope), toe_(toe) {}
+
+  // {incident_amplitude (m), grilli_s0 (-), grilli_breaks (1 or 0)} after the crest reading.
+  std::array<double, 3> operator()(double crest_x, double crest_amplitude) {
+    if (crest_x >= toe_ - still_) passed_ = true;
+    if (!passed_) incident_ = crest_amplitude;
+    if (!(incident_ > 0.0)) return {0.0, 0.0, 0.0};
+    const double ratio = incident_ / still_;
+    return {incident_, grilli_s0(ratio, slope_), grilli_breaks(ratio, slope_) ? 1.0 : 0.0};
+  }
+
+  std::vector<double> state() const { return {incident_, passed_ ? 1.0 : 0.0}; }
+  void restore(const std::vector<double>& s) {
+    if (s.size() == 2) {
+      incident_ = s[0];
+      passed_ = s[1] != 0.0;
+    }
+  }
+
+ private:
+  double still_, slope_, toe_;
+  double incident_ = 0.0;
+  bool passed_ = false;  // the crest has reached the toe: the incident amplitude is kept
+};
+
 // Still water (W 6.5, W-3 of spec/cases.md): a tank at rest under gravity.
 struct StillWaterReading {
   double bed_pressure = 0.0;       // Pa
@@ -87,7 +124,8 @@ struct StillWaterReading {
 };
 
 // - bed_pressure: the pressure at the bed as a gauge reads it: each particle's pressure in the
-//   four bottom rows (y - bed < 4 dx) and the middle 80 % of the tank's width, extrapolated to
+//   four bottom rows (y - bed < 4 dx) and x_lo < x < x_hi (a case reads the middle 80 % of the
+//   tank's width, or the span it names: the flat bed before a beach), extrapolated to
 //   the bed with the hydrostatic gradient (p + rho0 g (y - bed)), averaged. An even number of
 //   rows: the pressure of a column carries a small odd-even row mode that a pair of rows cancels
 //   (tests/properties/test_hydrostatic_tank.cpp says more).
@@ -101,12 +139,11 @@ StillWaterReading read_still_water(const ParticleSet<D>& ps, double x_lo, double
   StillWaterReading r;
   double p_sum = 0.0, y_sum = 0.0;
   long p_count = 0;
-  const double margin = 0.1 * (x_hi - x_lo);
   for (std::size_t i = 0; i < ps.n_real; ++i) {
     const double y = ps.x[i][D - 1] - bed;
     y_sum += y;
     r.density_deviation = std::max(r.density_deviation, std::abs(ps.rho[i] - rho0) / rho0);
-    if (y < 4.0 * dx && ps.x[i][0] > x_lo + margin && ps.x[i][0] < x_hi - margin) {
+    if (y < 4.0 * dx && ps.x[i][0] > x_lo && ps.x[i][0] < x_hi) {
       p_sum += ps.p[i] + rho0 * g * y;
       ++p_count;
     }

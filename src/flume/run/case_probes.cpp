@@ -20,6 +20,16 @@ CaseProbes<D>::CaseProbes(const CaseSpec& spec) : spec_(spec) {
   }
   if (spec.waves) waves_.emplace(spec.still_depth, spec.gauges, spec.second_crest);
   if (spec.breaking) breaking_.emplace(spec.spacing, spec.breaking_threshold);
+  if (spec.beach_slope > 0.0) shoaling_.emplace(spec.still_depth, spec.beach_slope, spec.beach_toe);
+  // The beaches: the fixed repulsive walls that face up (a paddle moves and stands upright).
+  std::vector<std::array<double, 4>> beaches;
+  for (const auto& w : spec.repulsive_walls) {
+    const bool faces_up = w.to[0] > w.from[0];  // the fluid on the left walking along +x: above
+    if (w.stroke == 0.0 && faces_up) beaches.push_back({w.from[0], w.from[1], w.to[0], w.to[1]});
+  }
+  if (!beaches.empty() && spec.waves)
+    bed_ = bed_heights(beaches, spec.domain_min[0], spec.domain_max[0], spec.spacing,
+                       spec.domain_min[1]);
 }
 
 template <int D>
@@ -34,8 +44,10 @@ std::vector<std::string> CaseProbes<D>::columns() const {
     if (spec_.second_crest > 0.0) cols.insert(cols.end(), {"crest2_x", "crest2_amplitude"});
     for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
       cols.push_back("gauge_" + std::to_string(g + 1));
+    if (spec_.beach_slope > 0.0)
+      cols.insert(cols.end(), {"incident_amplitude", "grilli_s0", "grilli_breaks"});
   }
-  if (spec_.breaking) cols.insert(cols.end(), {"overturn", "broken_at"});
+  if (spec_.breaking) cols.insert(cols.end(), {"overturn", "broken_at", "broken_x"});
   if (spec_.still_water) cols.insert(cols.end(), {"bed_pressure", "water_level"});
   if (spec_.density_deviation) cols.push_back("density_deviation");
   if (spec_.centre_of_mass) {
@@ -51,7 +63,7 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
   const double wall = spec_.domain_min[0];
   const double floor = spec_.domain_min[D - 1];
   std::vector<double> row{sim.time()};
-  std::array<double, 2> breaking_row{};
+  std::array<double, 3> breaking_row{};
   if constexpr (D == 2) {
     if (semi_axes_) {
       const auto ab = (*semi_axes_)(ps);
@@ -83,17 +95,26 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
     if (waves_) {
       // Every particle counts: a wave tank's spray is water the depth must hold.
       const bool periodic = spec_.walls[0] == "periodic" && sim.time() >= spec_.periodic_from;
-      const auto depth = depth_profile(ps, nullptr, spec_.domain_min[0], spec_.domain_max[0],
-                                       spec_.rho0, spec_.spacing, periodic);
+      const auto depth =
+          depth_profile(ps, nullptr, spec_.domain_min[0], spec_.domain_max[0], spec_.rho0,
+                        spec_.spacing, periodic, bed_.empty() ? nullptr : &bed_);
       const auto w = (*waves_)(depth);
       row.insert(row.end(), {w.crest_x, w.crest_amplitude});
       if (spec_.second_crest > 0.0) row.insert(row.end(), {w.crest2_x, w.crest2_amplitude});
       row.insert(row.end(), w.gauges.begin(), w.gauges.end());
+      if (shoaling_) {
+        const auto g = (*shoaling_)(w.crest_x, w.crest_amplitude);
+        row.insert(row.end(), g.begin(), g.end());
+      }
     }
     if (breaking_) row.insert(row.end(), breaking_row.begin(), breaking_row.end());
   }
   if (spec_.still_water || spec_.density_deviation) {
-    const auto s = read_still_water(ps, spec_.domain_min[0], spec_.domain_max[0], floor, spec_.rho0,
+    // The middle 80 % of the tank, or the span the case names.
+    const double lo = spec_.domain_min[0], hi = spec_.domain_max[0], margin = 0.1 * (hi - lo);
+    const bool span = spec_.bed_span.size() == 2;
+    const auto s = read_still_water(ps, span ? spec_.bed_span[0] : lo + margin,
+                                    span ? spec_.bed_span[1] : hi - margin, floor, spec_.rho0,
                                     gravity_magnitude(spec_), spec_.spacing);
     if (spec_.still_water) row.insert(row.end(), {s.bed_pressure, s.water_level});
     if (spec_.density_deviation) row.push_back(s.density_deviation);
@@ -117,7 +138,8 @@ std::vector<double> CaseProbes<D>::state() const {
   std::vector<double> out;
   for (const auto& part : {semi_axes_ ? semi_axes_->state() : std::vector<double>{},
                            waves_ ? waves_->state() : std::vector<double>{},
-                           breaking_ ? breaking_->state() : std::vector<double>{}}) {
+                           breaking_ ? breaking_->state() : std::vector<double>{},
+                           shoaling_ ? shoaling_->state() : std::vector<double>{}}) {
     out.push_back(static_cast<double>(part.size()));
     out.insert(out.end(), part.begin(), part.end());
   }
@@ -138,9 +160,11 @@ void CaseProbes<D>::restore(const std::vector<double>& s) {
   const auto semi = next();
   const auto wave = next();
   const auto broken = next();
+  const auto shoaled = next();
   if (semi_axes_) semi_axes_->restore(semi);
   if (waves_) waves_->restore(wave);
   if (breaking_) breaking_->restore(broken);
+  if (shoaling_) shoaling_->restore(shoaled);
 }
 
 template class CaseProbes<2>;

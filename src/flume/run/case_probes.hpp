@@ -34,6 +34,8 @@ class CaseProbes {
   std::optional<SemiAxesProbe> semi_axes_;
   std::optional<WaveProbe> waves_;
   std::optional<BreakingProbe> breaking_;
+  std::optional<ShoalingProbe> shoaling_;
+  std::vector<double> bed_;  // the beaches' heights under the depth profile's columns (or empty)
 };
 
 extern template class CaseProbes<2>;

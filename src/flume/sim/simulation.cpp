@@ -34,9 +34,10 @@ void sort_state(ParticleSet<D>& ps, const std::vector<std::uint32_t>& order, Swe
 template <int D>
 Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
                           std::unique_ptr<Scheme<D>> scheme, Physics<D> physics,
-                          SimulationConfig<D> config)
+                          SimulationConfig<D> config, RepulsiveWalls<D> repulsive)
     : ps_(std::move(particles)),
       walls_(std::move(walls)),
+      repulsive_(std::move(repulsive)),
       scheme_(std::move(scheme)),
       phys_(std::move(physics)),
       config_(config),
@@ -54,7 +55,7 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
     rho_lo_ = config_.density_band_lo * *lo;
     rho_hi_ = config_.density_band_hi * *hi;
   }
-  walls_.set_time(time_);
+  walls_at(time_);
   check_state();
 }
 
@@ -80,7 +81,7 @@ void Simulation<D>::restore(const ParticleSet<D>& particles, const SimulationSta
   integrator_.set_history(state.leapfrog_dt_prev);
   for (std::size_t i = 0; i < ps_.n_real; ++i)
     ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
-  walls_.set_time(time_);
+  walls_at(time_);
   check_state();
 }
 
@@ -111,7 +112,7 @@ double Simulation<D>::neighbours_at(double t) {
     h_min = std::min(h_min, ps_.h[i]);
   }
   const double range = scheme_->support() * h_max;
-  walls_.set_time(t);  // moving walls stand where they are at t while the rates are taken
+  walls_at(t);  // moving walls stand where they are at t while the rates are taken
   prepare_neighbours(range);
   uniform_h_ = h_min == h_max ? h_max : 0.0;
   return range;
@@ -137,6 +138,17 @@ double Simulation<D>::choose_step(double dt_stable, double max_dt) {
         ps_.n_real ? norm(ps_.a[worst]) : 0.0));
   }
   return std::min(dt_rule, max_dt);
+}
+
+template <int D>
+double Simulation<D>::accelerations(const SweepContext<D>& ctx) {
+  const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
+  if (repulsive_.empty()) return dt_stable;
+  PhaseClock::Scope phase(&clock_, "boundaries");
+  repulsive_.add_accelerations(ps_);
+  // The force sweep's step saw the scheme's accelerations only: taken again with the walls'.
+  return least_over_blocks(ps_.n_real, std::numeric_limits<double>::infinity(),
+                           [&](std::size_t b, std::size_t e) { return limit_.least(ps_, b, e); });
 }
 
 template <int D>
@@ -179,7 +191,7 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   prepare_step_rule(range);
 
   // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
-  const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
+  const double dt_stable = accelerations(ctx);
 
   std::optional<PhaseClock::Scope> phase;
   phase.emplace(&clock_, "integration");
@@ -187,10 +199,11 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   // The drift moves the particles to t^{n+1}; in the same pass each is put back across the
   // walls (standing where they are at t^{n+1}). The checks follow in a pass of their own (its
   // cost is a phase of flume bench): the first bad particle is reported.
-  walls_.set_time(time_ + dt);
+  walls_at(time_ + dt);
   const long none = static_cast<long>(ps_.n_real);
   auto put_back = [&](std::size_t b, std::size_t e) {
     walls_.put_back(ps_, b, e, range);
+    repulsive_.put_back(ps_, b, e);
     return none;
   };
   const EvolvedFields state = evolved();
@@ -224,7 +237,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
     if (stable && config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
       scheme_->filter_density(ps_, ctx, halo_);
     if (stable) prepare_step_rule(range);
-    const double dt_stable = scheme_->compute_accelerations(ps_, ctx, halo_, limit_);
+    const double dt_stable = accelerations(ctx);
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v);
     if (stable) *stable = dt_stable;
     const bool stage_of_modified = !stable && kind == RungeKuttaKind::modified;
@@ -232,6 +245,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   };
   auto put_back = [&](std::size_t b, std::size_t e) {
     walls_.put_back(ps_, b, e, range);
+    repulsive_.put_back(ps_, b, e);
     return none;
   };
 
@@ -241,7 +255,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   phase.emplace(&clock_, "integration");
   const double dt = choose_step(dt_stable, max_dt);
   // The stage state stands at t + dt/2 (W (3.85); W (3.92)'s Phi^{n+1/2}).
-  walls_.set_time(time_ + 0.5 * dt);
+  walls_at(time_ + 0.5 * dt);
   rk.to_stage(ps_, dt, none, put_back, drift);
   ps_.drop_ghosts();
   phase.reset();
@@ -254,7 +268,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   range = neighbours_at(time_ + 0.5 * dt);
   drift = rates(nullptr);
   phase.emplace(&clock_, "integration");
-  walls_.set_time(time_ + dt);
+  walls_at(time_ + dt);
   rk.to_end(ps_, dt, none, put_back, drift);
   phase.reset();
   finish_step(dt, checked());

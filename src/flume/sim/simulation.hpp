@@ -11,6 +11,7 @@
 #include <string>
 
 #include "flume/boundaries/box_walls.hpp"
+#include "flume/boundaries/repulsive_walls.hpp"
 #include "flume/integrators/leapfrog.hpp"
 #include "flume/integrators/runge_kutta.hpp"
 #include "flume/neighbors/cell_grid.hpp"
@@ -41,8 +42,9 @@ struct SimulationConfig {
 template <int D>
 class Simulation {
  public:
+  // `repulsive`: walls of repulsive boundary particles inside the box (slopes, a paddle).
   Simulation(ParticleSet<D> particles, BoxWalls<D> walls, std::unique_ptr<Scheme<D>> scheme,
-             Physics<D> physics, SimulationConfig<D> config);
+             Physics<D> physics, SimulationConfig<D> config, RepulsiveWalls<D> repulsive = {});
 
   // Advances one step, never beyond max_dt. Throws SimulationError when a check fails (a
   // non-finite value, a density outside the band, a particle leaving the domain, the step
@@ -77,6 +79,14 @@ class Simulation {
   // The step to take: the rule's (fixed, or the stable step of the rates) capped by max_dt.
   // Throws when the stable step has collapsed (a blow-up).
   double choose_step(double dt_stable, double max_dt);
+  // The accelerations of the present state: the scheme's, then the repulsive walls' added;
+  // returns the stable step of them (time_step.hpp).
+  double accelerations(const SweepContext<D>& ctx);
+  // Every wall, the box's and the repulsive ones, placed at time t.
+  void walls_at(double t) {
+    walls_.set_time(t);
+    repulsive_.set_time(t);
+  }
   void step_leap_frog(double max_dt);
   void step_runge_kutta(double max_dt, RungeKuttaKind kind);
   // Before the rates: the pair maximum of W (3.88), when that is the step rule.
@@ -123,6 +133,7 @@ class Simulation {
 
   ParticleSet<D> ps_;
   BoxWalls<D> walls_;
+  RepulsiveWalls<D> repulsive_;
   std::unique_ptr<Scheme<D>> scheme_;
   Physics<D> phys_;
   SimulationConfig<D> config_;
