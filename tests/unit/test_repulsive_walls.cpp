@@ -61,6 +61,10 @@ TEST(MonaghanKosW610, SizeAgainstAHandComputation) {
   EXPECT_NEAR(mk.tangential_part(0.005), 0.5, 1e-15);
   EXPECT_NEAR(mk.tangential_part(-0.0025), 0.5 * (1.0 + std::sqrt(0.5)), 1e-15);
   EXPECT_EQ(mk.tangential_part(0.0101), 0.0);
+  // A reach of its own (q = y / reach): at y = reach / 4, R = A (1 - 1/4) / (1/2) = 1.5 A.
+  const MonaghanKosW610 short_reach{20.0, 0.01, 0.0, 0.01};
+  EXPECT_NEAR(short_reach.normal_part(0.0025, h), 1.5 * a, 1e-12 * a);
+  EXPECT_EQ(short_reach.normal_part(0.0101, h), 0.0);
   // The pole at y = 0 is held at `nearest`.
   const MonaghanKosW610 held{20.0, 0.01, 0.002};
   EXPECT_EQ(held.normal_part(0.0, h), held.normal_part(0.002, h));

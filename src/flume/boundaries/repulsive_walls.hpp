@@ -39,6 +39,7 @@ struct RepulsiveWall {
   double spacing = 0.0;            // the boundary particles' spacing, m
   LennardJonesW67 lennard_jones;   // W (6.7)'s constants
   double sound_speed = 0.0;        // c of Monaghan-Kos's A = 0.01 c^2 / h, m/s
+  double reach = 0.0;              // m: Monaghan-Kos's q = y / reach; 0 = 2h
   double put_back_distance = 0.0;  // Delta z of W (6.8), m
   double clearance = 0.0;          // m: no fluid particle starts nearer (the force's reach)
   PistonFlapW69 paddle;            // the wall's motion, W (6.9) (none unless its stroke is set)
@@ -100,8 +101,8 @@ class RepulsiveWalls {
       const double y = dot(rel, p.normal);   // in front of it
       const double ds = wall.spacing;
       if (wall.force == Repulsion::monaghan_kos) {
-        const MonaghanKosW610 mk{wall.sound_speed, ds, wall.put_back_distance};
-        if (!(y < 2.0 * h)) continue;  // q = y / 2h > 1 (or a NaN): no force
+        const MonaghanKosW610 mk{wall.sound_speed, ds, wall.put_back_distance, wall.reach};
+        if (!(y < (wall.reach > 0.0 ? wall.reach : 2.0 * h))) continue;  // q > 1 (or a NaN)
         // The boundary particles within one spacing along the wall, W (6.10) summed.
         const long k0 = index_at(std::ceil(s / ds - 1.0), p.last);
         const long k1 = index_at(std::floor(s / ds + 1.0), p.last);

@@ -226,6 +226,7 @@ RepulsiveWalls<D> build_repulsive_walls(const CaseSpec& spec, const Physics<D>& 
     w.sound_speed = phys.eos.reference_sound_speed();
     w.put_back_distance = ws.put_back_distance;
     w.clearance = ws.clearance;
+    w.reach = ws.reach;
     w.paddle =
         PistonFlapW69{ws.hinge_depth, ws.reference_height, ws.stroke, ws.frequency, ws.phase};
     walls.push_back(w);

@@ -184,8 +184,11 @@ diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted agains
 #   angle, or a paddle. from = [x, y], to = [x, y] (m): a straight wall with the fluid on its
 #   left as one walks from `from` to `to` (a beach rising to the right runs from its toe up);
 #   clearance = 0.0 (m: no fluid particle starts behind it or nearer than this; 0 = the force's
-#   reach, 2h for monaghan_kos and cutoff for lennard_jones, where water at rest settles).
-#   force = "monaghan_kos" (W (6.10)-(6.12), q = y / 2h, A = 0.01 c^2 / h: a smooth wall) or
+#   reach, `reach` for monaghan_kos and cutoff for lennard_jones, where water at rest settles).
+#   force = "monaghan_kos" (W (6.10)-(6.12), q = y / 2h, A = 0.01 c^2 / h: a smooth wall;
+#   reach = 0.0, spacings: q = y / reach instead, 0 = 2h; water at rest sits up to the reach
+#   off the wall, so a reach of one spacing keeps a beach's water near the bed's, whose mirror
+#   holds it half a spacing off) or
 #   "lennard_jones" (W (6.7): strength = D, m^2/s^2, 0 = 5 g H with H the tallest fluid
 #   block; cutoff = r0, m, 0 = spacing; powers = [p1, p2], p1 > p2: a rugged wall);
 #   spacing = 0.0 (m, the boundary particles' spacing; 0 = particles.spacing);
@@ -263,7 +266,7 @@ const std::string& repulsive_wall_defaults() {
   static const std::string d =
       "from = [0.0, 0.0]\nto = [0.0, 0.0]\nforce = \"monaghan_kos\"\nspacing = 0.0\n"
       "strength = 0.0\ncutoff = 0.0\npowers = [12.0, 4.0]\nput_back_distance = 0.5\n"
-      "clearance = 0.0\n"
+      "clearance = 0.0\nreach = 0.0\n"
       "stroke = 0.0\nfrequency = 0.0\nphase = 0.0\nhinge_depth = 0.1344\n"
       "reference_height = 0.15\n";
   return d;

@@ -113,9 +113,10 @@ void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
     if (ws.force == "lennard_jones" && !(ws.strength > 0.0))
       r.fail(key + ".strength", "cannot be derived without gravity and water: set it (m^2/s^2)");
     ws.put_back_distance = r.in_range(key + ".put_back_distance", 0.01, 2.0) * s.spacing;
+    ws.reach = r.non_negative(key + ".reach") * s.spacing;
+    if (ws.reach == 0.0) ws.reach = 2.0 * s.h_over_dx * s.spacing;
     ws.clearance = r.non_negative(key + ".clearance");
-    if (ws.clearance == 0.0)
-      ws.clearance = ws.force == "lennard_jones" ? ws.cutoff : 2.0 * s.h_over_dx * s.spacing;
+    if (ws.clearance == 0.0) ws.clearance = ws.force == "lennard_jones" ? ws.cutoff : ws.reach;
     ws.stroke = r.num(key + ".stroke");
     ws.frequency = r.non_negative(key + ".frequency");
     ws.phase = r.num(key + ".phase");

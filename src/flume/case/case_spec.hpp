@@ -55,6 +55,7 @@ struct RepulsiveWallSpec {
   double power_repulsive = 12.0, power_attractive = 4.0;  // p1, p2 of W (6.7)
   double put_back_distance = 0.0;                         // Delta z of W (6.8), m (resolved)
   double clearance = 0.0;       // m: no fluid particle starts nearer (resolved: the force's reach)
+  double reach = 0.0;           // m: Monaghan-Kos's q = y / reach (resolved; 0 in the file: 2h)
   double stroke = 0.0;          // A of W (6.9), m; 0: no motion
   double frequency = 0.0;       // f, Hz
   double phase = 0.0;           // rad
