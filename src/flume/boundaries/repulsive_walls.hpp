@@ -19,6 +19,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -96,9 +97,7 @@ class RepulsiveWalls {
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       const RepulsiveWall<D>& wall = walls_[w];
       const Placed& p = placed_[w];
-      const Vec<D> rel = x - p.from;
-      const double s = dot(rel, p.tangent);  // along the wall from its first particle
-      const double y = dot(rel, p.normal);   // in front of it
+      const auto [s, y] = p.local(x);
       const double ds = wall.spacing;
       if (wall.force == Repulsion::monaghan_kos) {
         const MonaghanKosW610 mk{wall.sound_speed, ds, wall.put_back_distance, wall.reach};
@@ -136,8 +135,7 @@ class RepulsiveWalls {
       const Placed& p = placed_[w];
       const double dz = walls_[w].put_back_distance;
       for (std::size_t i = b; i < e; ++i) {
-        const Vec<D> rel = ps.x[i] - p.from;
-        const double s = dot(rel, p.tangent), y = dot(rel, p.normal);
+        const auto [s, y] = p.local(ps.x[i]);
         if (!(y < 0.0 && s >= 0.0 && s <= p.length)) continue;
         ps.x[i] += p.normal * (dz - y);
         // The paddle's velocity is along x and linear in the height: linear along the wall.
@@ -160,8 +158,7 @@ class RepulsiveWalls {
   bool blocked(const Vec<D>& x) const {
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       const Placed& p = placed_[w];
-      const Vec<D> rel = x - p.from;
-      const double s = dot(rel, p.tangent), y = dot(rel, p.normal);
+      const auto [s, y] = p.local(x);
       if (y < walls_[w].clearance && s >= 0.0 && s <= p.length) return true;
     }
     return false;
@@ -180,6 +177,13 @@ class RepulsiveWalls {
     double length = 0.0;
     double speed_from = 0.0, speed_to = 0.0;  // the wall's velocity along x at its ends, m/s
     long last = 0;                            // index of the last boundary particle
+
+    // x's place relative to the wall: {s, y}, m, along it from its first particle and in
+    // front of it (along the normal).
+    std::array<double, 2> local(const Vec<D>& x) const {
+      const Vec<D> rel = x - from;
+      return {dot(rel, tangent), dot(rel, normal)};
+    }
   };
   std::vector<RepulsiveWall<D>> walls_;
   std::vector<Placed> placed_;

@@ -227,7 +227,6 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   const auto* blocks = t.at_path("fluid_blocks").as_array();
   if (!blocks || blocks->empty())
     r.fail("fluid_blocks", "at least one [[fluid_blocks]] is required");
-  double tallest = 0.0;
   for (std::size_t b = 0; b < blocks->size(); ++b) {
     const std::string key = fmt::format("fluid_blocks[{}]", b);
     FluidBlock fb;
@@ -280,7 +279,6 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       if (fb.max[dim - 1] + fb.surface_amplitude > s.domain_max[dim - 1])
         r.fail(key + ".surface_amplitude", "puts the mound above the domain's top");
     }
-    tallest = std::max(tallest, fb.max[dim - 1] + fb.surface_amplitude - fb.min[dim - 1]);
     s.blocks.push_back(fb);
   }
   check_fits_in_memory(r, s);
@@ -296,7 +294,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     c0 = s.sound_speed;
   } else {
     const double g = gravity_magnitude(s);
-    if (u_max == 0.0) u_max = std::sqrt(2.0 * g * tallest);
+    if (u_max == 0.0) u_max = std::sqrt(2.0 * g * tallest_water(s));
     if (!(u_max > 0.0))
       r.fail("eos.sound_speed",
              "cannot be derived without gravity: set eos.sound_speed, "

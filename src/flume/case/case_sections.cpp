@@ -78,9 +78,6 @@ void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
   const auto* walls = t.at_path("repulsive_walls").as_array();
   if (!walls) return;
   const int dim = s.dimension;
-  double tallest = 0.0;
-  for (const auto& b : s.blocks)
-    tallest = std::max(tallest, b.max.back() + b.surface_amplitude - b.min.back());
   for (std::size_t w = 0; w < walls->size(); ++w) {
     const std::string key = fmt::format("repulsive_walls[{}]", w);
     if (dim != 2) r.fail(key, "repulsive walls are for 2D cases");
@@ -102,7 +99,7 @@ void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
       r.fail(key + ".spacing", fmt::format("= {} m: a wall {:.4g} m long needs a smaller spacing",
                                            ws.spacing, length));
     ws.strength = r.non_negative(key + ".strength");
-    if (ws.strength == 0.0) ws.strength = 5.0 * gravity_magnitude(s) * tallest;
+    if (ws.strength == 0.0) ws.strength = 5.0 * gravity_magnitude(s) * tallest_water(s);
     ws.cutoff = r.non_negative(key + ".cutoff");
     if (ws.cutoff == 0.0) ws.cutoff = ws.spacing;
     const auto powers = r.numbers(key + ".powers");

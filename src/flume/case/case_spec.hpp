@@ -3,6 +3,7 @@
 // builds a CaseSpec; the library builds the simulation from it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -210,6 +211,14 @@ inline double gravity_magnitude(const CaseSpec& spec) {
   for (double x : spec.gravity)
     g2 += x * x;
   return std::sqrt(g2);
+}
+
+// H, m: the tallest body of water, the largest height of a fluid block (with its mound, W (6.21)).
+inline double tallest_water(const CaseSpec& spec) {
+  double h = 0.0;
+  for (const auto& b : spec.blocks)
+    h = std::max(h, b.max.back() + b.surface_amplitude - b.min.back());
+  return h;
 }
 
 }  // namespace flume
