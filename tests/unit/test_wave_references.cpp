@@ -109,6 +109,40 @@ window_to = 9.0
   EXPECT_NEAR(points[0].error, 0.1 / 1.3, 1e-12);
 }
 
+TEST(WaveReferences, SelfLineAtGivesThePhaseShift) {
+  // A crest at 1.3 m/s that two waves' meeting at t = 3 s sets 0.12 m back (a KdV phase
+  // shift), its speed unchanged: its track after (t = 4-6 s), extrapolated to t = 3 s, stands
+  // 0.12 m behind its track before (t = 1-2.5 s). The error is the shift, in m.
+  const auto spec = test::spec_from(tank_toml(R"(
+[[validation.curves]]
+probe = "crest_x"
+reference = "self"
+reference_from = 1.0
+reference_to = 2.5
+statistic = "line_at"
+at = 3.0
+window_from = 4.0
+window_to = 6.0
+error = "absolute"
+)"));
+  io::CsvData probes;
+  probes.columns = {"time", "crest_x"};
+  for (int k = 0; k <= 80; ++k) {
+    const double t = k / 10.0;
+    probes.rows.push_back({t, 0.2 + 1.3 * t - (t > 3.0 ? 0.12 : 0.0)});
+  }
+  const auto& check = spec.curves.front();
+  ASSERT_EQ(check.statistic, CurveStatistic::line_at);
+  const auto ref = curve_reference(spec, check, probes);
+  const auto points = compare_over_window(probes.column("time"), probes.column("crest_x"),
+                                          ref.column("t"), ref.column("value"), 1.0, 1.0, true,
+                                          CurveStatistic::line_at, 4.0, 6.0, check.at);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_NEAR(points[0].reference, 0.2 + 1.3 * 3.0, 1e-12);
+  EXPECT_NEAR(points[0].value, 0.2 + 1.3 * 3.0 - 0.12, 1e-12);
+  EXPECT_NEAR(points[0].error, 0.12, 1e-12);
+}
+
 TEST(WaveReferences, FreeFallOfTheLastBlock) {
   // The last block (a disc of radius 0.1 m, at rho0) falls while the layer (10 x 0.15 m)
   // rests: the centre of mass falls by f g t^2 / 2, f the disc's share of the particles'

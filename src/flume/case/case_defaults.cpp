@@ -211,7 +211,10 @@ diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted agains
 #   gated = true (false: the curve is reported beside the others but cannot fail validation),
 #   statistic = "pointwise" (every reference point), "mean" (the mean over the window) or
 #   "slope" (the least-squares slope over the window: a speed from a position) or "max" (the
-#   largest value over the window: a deviation kept within a bound),
+#   largest value over the window: a deviation kept within a bound) or "line_at" (the
+#   least-squares line over the window, at the reference's x = at, at = 0.0: with reference =
+#   "self", a crest's place at `at` from its track after a collision against its track before,
+#   the phase shift),
 #   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point),
 #   reference = "theory:kdv": columns t (s), amplitude (m: the amplitude KdV gives the speed
 #   measured over the window, W (6.16): A = 2 H (V / sqrt(g H) - 1), V the slope of crest_x) and
@@ -284,7 +287,7 @@ const std::string& curve_defaults() {
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
       "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n"
       "statistic = \"pointwise\"\nwindow_from = 0.0\nwindow_to = 0.0\n"
-      "reference_from = 0.0\nreference_to = 0.0\n";
+      "reference_from = 0.0\nreference_to = 0.0\nat = 0.0\n";
   return d;
 }
 

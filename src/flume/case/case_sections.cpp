@@ -222,11 +222,15 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       cc.mean_tolerance = r.non_negative(key + ".mean_tolerance");
       cc.quick_mean_tolerance = r.non_negative(key + ".quick_mean_tolerance");
       cc.gated = r.boolean(key + ".gated");
-      const std::string stat = r.one_of(key + ".statistic", {"pointwise", "mean", "slope", "max"});
-      cc.statistic = stat == "mean"    ? CurveStatistic::mean
-                     : stat == "slope" ? CurveStatistic::slope
-                     : stat == "max"   ? CurveStatistic::max
-                                       : CurveStatistic::pointwise;
+      const std::string stat =
+          r.one_of(key + ".statistic", {"pointwise", "mean", "slope", "max", "line_at"});
+      cc.statistic = stat == "mean"      ? CurveStatistic::mean
+                     : stat == "slope"   ? CurveStatistic::slope
+                     : stat == "max"     ? CurveStatistic::max
+                     : stat == "line_at" ? CurveStatistic::line_at
+                                         : CurveStatistic::pointwise;
+      cc.at = r.num(key + ".at");
+      if (!std::isfinite(cc.at)) r.fail(key + ".at", "must be finite");
       cc.window_from = r.non_negative(key + ".window_from");
       cc.window_to = r.non_negative(key + ".window_to");
       if (cc.window_to != 0.0 && !(cc.window_to > cc.window_from))

@@ -88,6 +88,7 @@ struct CurveCheck {
   // speed or height that must not change between passes of a periodic tank).
   double reference_from = 0.0;
   double reference_to = 0.0;
+  double at = 0.0;  // line_at's x (s): e.g. when two waves met, for the phase shift
 };
 
 // A profile field compared with a reference solution at the end time (validate): the relative

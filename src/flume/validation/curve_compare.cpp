@@ -61,10 +61,15 @@ double slope_of(const std::vector<double>& x, const std::vector<double>& y) {
   return sxy / sxx;
 }
 
+// The least-squares line of (x, y) at x = at.
+double line_at(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  return mean_of(y) + slope_of(x, y) * (at - mean_of(x));
+}
+
 }  // namespace
 
 double window_statistic(const std::vector<double>& t, const std::vector<double>& y,
-                        CurveStatistic statistic, double from, double to) {
+                        CurveStatistic statistic, double from, double to, double at) {
   std::vector<double> xs, ys;
   for (std::size_t k = 0; k < t.size() && k < y.size(); ++k)
     if (t[k] >= from && t[k] <= to) {
@@ -73,15 +78,14 @@ double window_statistic(const std::vector<double>& t, const std::vector<double>&
     }
   if (xs.size() < 2 || statistic == CurveStatistic::pointwise) return std::nan("");
   if (statistic == CurveStatistic::max) return *std::max_element(ys.begin(), ys.end());
+  if (statistic == CurveStatistic::line_at) return line_at(xs, ys, at);
   return statistic == CurveStatistic::mean ? mean_of(ys) : slope_of(xs, ys);
 }
 
-std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
-                                            const std::vector<double>& y,
-                                            const std::vector<double>& ref_x,
-                                            const std::vector<double>& ref_y, double time_scale,
-                                            double value_scale, bool absolute,
-                                            CurveStatistic statistic, double from, double to) {
+std::vector<CurvePoint> compare_over_window(
+    const std::vector<double>& t, const std::vector<double>& y, const std::vector<double>& ref_x,
+    const std::vector<double>& ref_y, double time_scale, double value_scale, bool absolute,
+    CurveStatistic statistic, double from, double to, double at) {
   std::vector<double> rx, ry;
   for (std::size_t k = 0; k < ref_x.size(); ++k)
     if (ref_x[k] >= from && ref_x[k] <= to) {
@@ -107,6 +111,9 @@ std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
   } else if (statistic == CurveStatistic::max) {
     out.value = *std::max_element(fv.begin(), fv.end());
     out.reference = *std::max_element(rv.begin(), rv.end());
+  } else if (statistic == CurveStatistic::line_at) {
+    out.value = line_at(xs, fv, at);
+    out.reference = line_at(xs, rv, at);
   } else {
     out.value = slope_of(xs, fv);
     out.reference = slope_of(xs, rv);

@@ -28,31 +28,31 @@ enum class CurveStatistic {
   mean,       // the mean of the values at the reference points
   slope,      // their least-squares slope against x (a speed from a position)
   max,        // the largest of them (a deviation that must stay within a bound)
+  line_at,    // their least-squares line's value at a given x (a crest's place extrapolated)
 };
 
 // Compares the statistic of flume's values (interpolated at the reference points inside the
 // window and the simulated time) with the same statistic of the reference. pointwise gives one
-// point per reference point; mean and slope give one point at the window's last reference point
-// (empty if fewer than two points fall inside).
-std::vector<CurvePoint> compare_over_window(const std::vector<double>& t,
-                                            const std::vector<double>& y,
-                                            const std::vector<double>& ref_x,
-                                            const std::vector<double>& ref_y, double time_scale,
-                                            double value_scale, bool absolute,
-                                            CurveStatistic statistic, double from, double to);
+// point per reference point; the others give one point at the window's last reference point
+// (empty if fewer than two points fall inside). `at` is line_at's x.
+std::vector<CurvePoint> compare_over_window(
+    const std::vector<double>& t, const std::vector<double>& y, const std::vector<double>& ref_x,
+    const std::vector<double>& ref_y, double time_scale, double value_scale, bool absolute,
+    CurveStatistic statistic, double from, double to, double at = 0.0);
 
-// "mean", "slope", "max" or "pointwise".
+// "mean", "slope", "max", "line_at" or "pointwise".
 inline const char* statistic_name(CurveStatistic s) {
-  return s == CurveStatistic::mean    ? "mean"
-         : s == CurveStatistic::slope ? "slope"
-         : s == CurveStatistic::max   ? "max"
-                                      : "pointwise";
+  return s == CurveStatistic::mean      ? "mean"
+         : s == CurveStatistic::slope   ? "slope"
+         : s == CurveStatistic::max     ? "max"
+         : s == CurveStatistic::line_at ? "line_at"
+                                        : "pointwise";
 }
 
-// The statistic (mean or least-squares slope) of the samples (t, y) with t in [from, to]; NaN
-// when fewer than two fall inside (pointwise is not a statistic: NaN).
+// The statistic of the samples (t, y) with t in [from, to] (line_at: the least-squares line's
+// value at t = at); NaN when fewer than two fall inside (pointwise is not a statistic: NaN).
 double window_statistic(const std::vector<double>& t, const std::vector<double>& y,
-                        CurveStatistic statistic, double from, double to);
+                        CurveStatistic statistic, double from, double to, double at = 0.0);
 
 // Linear interpolation of (xs, ys) at x, xs ascending; x must lie within [xs.front(), xs.back()].
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);

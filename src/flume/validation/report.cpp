@@ -83,8 +83,10 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
     md += fmt::format(
         "Compared: the {} of the values at the reference's points with {} from {:.3g} to the "
         "row's {}.\n",
-        check.statistic == CurveStatistic::slope ? "least-squares slope (per unit x)"
-                                                 : statistic_name(check.statistic),
+        check.statistic == CurveStatistic::slope ? std::string("least-squares slope (per unit x)")
+        : check.statistic == CurveStatistic::line_at
+            ? fmt::format("least-squares line's value at {} = {:.4g}", check.reference_x, check.at)
+            : std::string(statistic_name(check.statistic)),
         check.reference_x, check.window_from, check.reference_x);
   if (check.theory == "self")
     md += fmt::format(

@@ -135,14 +135,23 @@ io::CsvData free_fall_reference(const CaseSpec& spec, const io::CsvData& probes)
 }
 
 // The probe's own statistic over the reference window, as a table over the check's window
-// whose statistic is that value (a constant for a mean, a line of that slope for a slope).
+// whose statistic is that value (a constant for a mean, a line of that slope for a slope; for
+// line_at the reference window's line itself, extrapolated: its value at `at` is the place the
+// earlier track predicts, so the error is the phase shift).
 io::CsvData self_reference(const CurveCheck& check, const io::CsvData& probes) {
-  const double value = window_statistic(probes.column("time"), probes.column(check.probe),
-                                        check.statistic, check.reference_from, check.reference_to);
+  const auto t = probes.column("time"), y = probes.column(check.probe);
+  const double value =
+      window_statistic(t, y, check.statistic, check.reference_from, check.reference_to);
   io::CsvData out;
   out.columns = {"t", "value"};
-  for (double tw : window_times(check, probes))
-    out.rows.push_back({tw, check.statistic == CurveStatistic::slope ? value * tw : value});
+  for (double tw : window_times(check, probes)) {
+    const double v = check.statistic == CurveStatistic::slope ? value * tw
+                     : check.statistic == CurveStatistic::line_at
+                         ? window_statistic(t, y, CurveStatistic::line_at, check.reference_from,
+                                            check.reference_to, tw)
+                         : value;
+    out.rows.push_back({tw, v});
+  }
   return out;
 }
 

@@ -240,7 +240,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
         s.curves.push_back(
             compare_over_window(t, probes.back().column(check.probe), ref.column(check.reference_x),
                                 ref.column(check.reference_y), spec.time_scale, check.value_scale,
-                                check.absolute, check.statistic, check.window_from, to));
+                                check.absolute, check.statistic, check.window_from, to, check.at));
       }
     }
     if (s.run.completed) s.profile_errors = profile_errors(spec, run_dir);
