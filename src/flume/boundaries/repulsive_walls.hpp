@@ -150,11 +150,11 @@ class RepulsiveWalls {
   }
 
   // Whether x stands behind a wall (within its length) or nearer to it than its clearance:
-  // where a fluid block places no particle. The clearance is the force's reach (2h for
-  // Monaghan-Kos, r0 for Lennard-Jones): water at rest settles just inside it, where the wall's
-  // push balances the pressure's one-sided pull (with c0 = 83 m/s, at q of about 0.9 under a
-  // 0.15 m column, estimating the pull as 2 p / (rho h)). Water placed nearer starts with a push of
-  // thousands of m/s^2 (R at half a spacing) and is thrown off the wall.
+  // where a fluid block places no particle. The clearance is the force's reach unless the case
+  // sets it (Monaghan-Kos's, 2h by default; r0 for Lennard-Jones): water at rest settles just
+  // inside it, where the wall's push balances the pressure's one-sided pull (with c0 = 83 m/s, at q
+  // of about 0.9 under a 0.15 m column, estimating the pull as 2 p / (rho h)). Water placed nearer
+  // starts with a push of thousands of m/s^2 (R at half a spacing) and is thrown off the wall.
   bool blocked(const Vec<D>& x) const {
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       const Placed& p = placed_[w];
