@@ -171,6 +171,26 @@ TEST(WaveProbe, TwoWavesAreTrackedAsTheHighestAndTheHighestOtherCrest) {
       std::isnan(far(depth_profile(two(2.3, 5.6), nullptr, 0.0, L, rho0, dx, true)).crest2_x));
 }
 
+TEST(WaterDepth, OverABeachTheSurfacesElevationAndDryIsZero) {
+  // A 1:2 beach from its toe (0.5, 0) to (1, 0.25) under a 1 m tank sampled every 0.01 m: the
+  // bed's height at each column's centre x is (x - 0.5) / 2 beyond the toe, 0 before it.
+  const double dx = 0.01, rho0 = 1000.0;
+  const auto bed = bed_heights({{0.5, 0.0, 1.0, 0.25}}, 0.0, 1.0, dx, 0.0);
+  ASSERT_EQ(bed.size(), 100u);
+  EXPECT_EQ(bed[10], 0.0);
+  EXPECT_NEAR(bed[70], (0.705 - 0.5) / 2.0, 1e-12);
+  // A layer 15 rows deep over the flat part only (x < 0.5): its depth where the bed is flat,
+  // and over the beach the elevation where at least half a spacing of water stands, 0 where dry.
+  auto ps = layer(0.5, 15, dx, rho0);
+  const auto d = depth_profile(ps, nullptr, 0.0, 1.0, rho0, dx, false, &bed);
+  EXPECT_NEAR(d.eta[20], 0.15, 1e-12);
+  EXPECT_EQ(d.eta[60], 0.0);  // dry beach
+  // The first beach column (centre 0.505 m) still holds the B-spline's tail of the layer.
+  const auto bare = depth_profile(ps, nullptr, 0.0, 1.0, rho0, dx, false);
+  EXPECT_NEAR(d.eta[50], bare.eta[50] + bed[50], 1e-15);
+  EXPECT_GE(bare.eta[50], 0.5 * dx);
+}
+
 TEST(StillWater, BedPressureLevelAndDensityOfAHydrostaticLayer) {
   // A lattice layer of 15 rows whose pressure is hydrostatic, p = rho0 g (H - y), reads the
   // bed pressure rho0 g H exactly, the level H exactly (n rows have mean height n dx / 2) and

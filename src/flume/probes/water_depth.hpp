@@ -14,7 +14,8 @@
 // thickness; given the bed's height at each sample, eta is then the surface's elevation, the
 // bed's height plus the thickness where the water is at least half a spacing thick, and 0 where
 // the beach is dry (no crest, a gauge reading -H). The wall holds the water off by up to its
-// reach (2h for Monaghan-Kos), so over a beach eta reads low by about that gap; and a thin sheet
+// reach (Monaghan-Kos's, 2h unless the case sets it), so over a beach eta reads low by about that
+// gap; and a thin sheet
 // running up the beach reads its elevation, which can exceed a crest's once a wave runs up.
 #pragma once
 
@@ -34,6 +35,11 @@ inline double cubic_bspline(double q) {
   return q < 1.0   ? 2.0 / 3.0 - q * q + 0.5 * q * q * q
          : q < 2.0 ? (2.0 - q) * (2.0 - q) * (2.0 - q) / 6.0
                    : 0.0;
+}
+
+// The number of dx-wide columns over [x_lo, x_hi] (at least one).
+inline long column_count(double x_lo, double x_hi, double dx) {
+  return std::max(1L, std::lround((x_hi - x_lo) / dx));
 }
 
 struct DepthProfile {
@@ -71,7 +77,7 @@ inline DepthProfile depth_profile(const ParticleSet<2>& ps, const std::vector<ch
   out.x_lo = x_lo;
   out.dx = dx;
   out.periodic = periodic;
-  const auto n = std::max(1L, std::lround((x_hi - x_lo) / dx));
+  const long n = column_count(x_lo, x_hi, dx);
   out.eta.assign(static_cast<std::size_t>(n), 0.0);
   const auto fold = [&](long c) {
     if (periodic) return ((c % n) + n) % n;
@@ -101,7 +107,7 @@ inline DepthProfile depth_profile(const ParticleSet<2>& ps, const std::vector<ch
 // (x1, y1), taken over their x-range), 0 where there is none.
 inline std::vector<double> bed_heights(const std::vector<std::array<double, 4>>& beaches,
                                        double x_lo, double x_hi, double dx, double floor) {
-  const auto n = std::max(1L, std::lround((x_hi - x_lo) / dx));
+  const long n = column_count(x_lo, x_hi, dx);
   std::vector<double> bed(static_cast<std::size_t>(n), 0.0);
   for (long c = 0; c < n; ++c) {
     const double x = x_lo + (static_cast<double>(c) + 0.5) * dx;
