@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "flume/case/summation_masses.hpp"
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
 #include "flume/schemes/registry.hpp"
@@ -282,6 +283,12 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
       ps.add_real(next_id++, x, v, rho * volume, rho, h);
       if (ps.uses(kFieldEnergy)) ps.e[ps.n_real - 1] = block.internal_energy;
     }
+  }
+  if (spec.mass == "summation") {
+    const std::vector<double> masses =
+        with_kernel<D>(*kernel_from_name(spec.kernel),
+                       [&](auto kernel) { return summation_masses<D, decltype(kernel)>(ps); });
+    std::copy(masses.begin(), masses.end(), ps.m.begin());
   }
   return ps;
 }

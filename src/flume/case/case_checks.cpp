@@ -68,6 +68,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
   s.dt = r.non_negative("case.dt");
 
   s.spacing = r.positive("particles.spacing");
+  s.mass = r.one_of("particles.mass", {"volume", "summation"});
 
   s.preset = r.one_of("scheme.preset", preset_names());
   s.kernel = r.one_of("scheme.kernel", kernel_names());
@@ -183,6 +184,12 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
              "= \"periodic\": the vertical axis (gravity's) cannot be periodic");
   }
   s.periodic_from = r.non_negative("boundaries.periodic_from");
+  // The summation of particles.mass sees the particles only: beside a wall it would miss the
+  // ghosts' share and give the particles there masses too large.
+  if (s.mass == "summation" &&
+      std::any_of(s.walls.begin(), s.walls.end(), [](const std::string& w) { return w != "open"; }))
+    r.fail("particles.mass",
+           "= \"summation\" needs every boundary open (the sum has no wall ghosts)");
 
   if (const auto* moving = t.at_path("moving_walls").as_array()) {
     std::vector<std::string> sides;

@@ -22,6 +22,10 @@ dt = 0.0               # fixed time step, s; 0 = the CFL rule of BL (63)
 
 [particles]
 spacing = 0.001        # initial particle spacing dx, m (particles on a square lattice)
+mass = "volume"        # volume: m = rho times the particle's volume (dx^D on a lattice) |
+                       # summation: m_a = rho_a / sum_b W_ab(h_a), so that the summation density
+                       # BL (1) starts at each block's density (no tension at a free surface;
+                       # open boundaries only: the sum has no wall ghosts)
 
 [scheme]
 preset = "continuity"  # standard | continuity | inconsistent | csph | sph-euler | wsph | rsph |

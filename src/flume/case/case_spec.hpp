@@ -113,7 +113,8 @@ struct CaseSpec {
   double dt = 0.0;        // s; 0 = CFL rule
 
   // [particles]
-  double spacing = 0.0;  // m
+  double spacing = 0.0;         // m
+  std::string mass = "volume";  // or "summation" (case/summation_masses.hpp)
 
   // [scheme]
   std::string preset;
