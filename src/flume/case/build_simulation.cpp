@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "flume/case/affine_flow_pressure.hpp"
 #include "flume/case/summation_masses.hpp"
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
@@ -279,6 +280,8 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
           block.density > 0.0 ? block.density
           : block.hydrostatic
               ? phys.eos.hydrostatic_density(g * (surface_top<D>(block, x) - x[D - 1]))
+          : block.initial_pressure == "velocity_field"
+              ? phys.eos.density_at_pressure(affine_flow_pressure(block, D, phys.eos.rho0, x))
               : phys.eos.rho0;
       ps.add_real(next_id++, x, v, rho * volume, rho, h);
       if (ps.uses(kFieldEnergy)) ps.e[ps.n_real - 1] = block.internal_energy;

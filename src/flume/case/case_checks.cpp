@@ -286,6 +286,32 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       if (fb.max[dim - 1] + fb.surface_amplitude > s.domain_max[dim - 1])
         r.fail(key + ".surface_amplitude", "puts the mound above the domain's top");
     }
+    fb.initial_pressure = r.one_of(key + ".initial_pressure", {"none", "velocity_field"});
+    if (fb.initial_pressure == "velocity_field") {
+      // case/affine_flow_pressure.hpp: an incompressible liquid ellipsoid in a straining flow
+      // about its centre, v = diag(g) (x - c) with sum g = 0.
+      double trace = 0.0, largest = 0.0, off = 0.0, v = 0.0;
+      for (int row = 0; row < dim; ++row) {
+        v = std::max(v, std::abs(fb.velocity[row]));
+        for (int col = 0; col < dim; ++col) {
+          const double g = fb.velocity_gradient[static_cast<std::size_t>(row * dim + col)];
+          largest = std::max(largest, std::abs(g));
+          if (row == col)
+            trace += g;
+          else
+            off = std::max(off, std::abs(g));
+        }
+      }
+      const std::string what = key + ".initial_pressure";
+      if (fb.shape != "ellipsoid" || s.eos == "ideal_gas" || fb.hydrostatic || fb.density > 0.0)
+        r.fail(what,
+               "= \"velocity_field\" is for an ellipsoid of the liquid (eos tait) at the "
+               "fluid's density (hydrostatic = false, no density)");
+      if (off > 0.0 || v > 0.0 || !(std::abs(trace) <= 1e-12 * largest))
+        r.fail(what,
+               "= \"velocity_field\" needs a diagonal velocity_gradient with zero trace "
+               "(an incompressible straining flow) and velocity = 0");
+    }
     s.blocks.push_back(fb);
   }
   check_fits_in_memory(r, s);

@@ -178,7 +178,10 @@ diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted agains
 #   (1/m, k), surface_from = "x_min" (or "x_max"): a 2D lattice box whose top is
 #   y = max_y + B exp(-k d), d the distance from that side (W (6.21): the mound that collapses
 #   into a solitary wave); with hydrostatic = true each column starts hydrostatic under its own
-#   surface.
+#   surface. initial_pressure = "none" (or "velocity_field": an ellipsoid of liquid whose
+#   velocity_gradient is diagonal with zero trace starts at the pressure of that incompressible
+#   straining flow, zero on its surface, its density from the EOS: BL 5.2's drop without the
+#   acoustic start-up; case/affine_flow_pressure.hpp).
 # [[moving_walls]]: a wall side that moves along its normal with a prescribed motion (the bore's
 #   push wall, BL 5.4; a piston wave-maker): side = "x_max" (any side that is a wall),
 #   velocity = 0.0 (m/s, along the axis), amplitude = 0.0 (m), period = 0.0 (s): the wall stands
@@ -254,13 +257,14 @@ const std::string& fluid_block_defaults(int dimension) {
       "density = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0]\nshape = \"box\"\nlayout = \"lattice\"\n"
       "count = 0\nseed = 1\nmin_distance = 0.0\nsurface_amplitude = 0.0\nsurface_decay = 0.0\n"
-      "surface_from = \"x_min\"\n";
+      "surface_from = \"x_min\"\ninitial_pressure = \"none\"\n";
   static const std::string d3 =
       "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
       "hydrostatic = true\ndensity = 0.0\ninternal_energy = 0.0\nspacing = 0.0\n"
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
       "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n"
-      "surface_amplitude = 0.0\nsurface_decay = 0.0\nsurface_from = \"x_min\"\n";
+      "surface_amplitude = 0.0\nsurface_decay = 0.0\nsurface_from = \"x_min\"\n"
+      "initial_pressure = \"none\"\n";
   return dimension == 3 ? d3 : d2;
 }
 

@@ -34,6 +34,9 @@ struct FluidBlock {
   double surface_amplitude = 0.0;  // B, m
   double surface_decay = 0.0;      // k, 1/m
   int surface_from = 0;            // 0: the mound at x_min; 1: at x_max
+  // "none", or "velocity_field": the incompressible pressure of the block's straining flow
+  // (case/affine_flow_pressure.hpp), the density from it through the EOS.
+  std::string initial_pressure = "none";
 };
 
 // A wall side moving along its normal (boundaries/wall_motion.hpp).

@@ -36,6 +36,8 @@ struct Eos {
   double specific_internal_energy(double rho, double e) const {
     return is_gas() ? e : tait().specific_internal_energy(rho);
   }
+  // The liquid's density at pressure p (the case reader starts no gas block from a pressure).
+  double density_at_pressure(double p) const { return tait().density_at(p); }
   // Density of still fluid at depth d (Tait's integrated column); a gas block starts uniform at
   // its own density (the case reader refuses a hydrostatic gas block).
   double hydrostatic_density(double g_times_depth) const {

@@ -50,6 +50,9 @@ struct TaitEos {
            kappa * (1.0 / rho - 1.0 / rho0);
   }
 
+  // The density at pressure p, the inverse of BL (60): rho0 (1 + p / kappa)^(1 / gamma).
+  double density_at(double p) const { return rho0 * std::pow(1.0 + p / kappa, 1.0 / gamma); }
+
   // Density of still water at depth d below a free surface at p = 0: the column integrated,
   // dp/dd = rho(p) g with this EOS, whose solution is
   //   rho(d) = rho0 (1 + (gamma - 1) rho0 g d / (gamma kappa))^(1 / (gamma - 1))
