@@ -143,6 +143,13 @@ TEST(CaseReader, PictureTimesAndDiagnosticsPlots) {
                        {"validation.pictures", "array of numbers"});
   expect_one_line_with(error_of(kValid, {"validation.variants=[1.0]"}),
                        {"validation.variants", "array of strings"});
+  // The picture's field is one that snapshots hold: a misspelt one drew no picture before.
+  expect_one_line_with(error_of(kValid, {"validation.picture_field=\"velocty\""}),
+                       {"validation.picture_field", "velocity_x"});
+  expect_one_line_with(error_of(kValid, {"validation.picture_field=\"internal_energy\""}),
+                       {"validation.picture_field"});  // a liquid has none in its snapshots
+  EXPECT_EQ(test::spec_from(kValid, {"validation.picture_field=\"pressure\""}).picture_field,
+            "pressure");
 }
 
 }  // namespace

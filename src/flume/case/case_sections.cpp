@@ -151,7 +151,15 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
     if (!(when >= 0.0)) r.fail("validation.pictures", fmt::format("{} s: must be >= 0", when));
     if (when <= s.end_time) s.pictures.push_back(when);
   }
-  s.picture_field = r.str("validation.picture_field");
+  // A field that snapshots hold (run/runner.cpp's snapshot_cloud), or a velocity component;
+  // bl41_deviation only comes with a corrected scheme, and a variant may be one.
+  {
+    std::vector<std::string> fields{"velocity", "velocity_x", "velocity_y",    "density",
+                                    "pressure", "mass",       "bl41_deviation"};
+    if (s.dimension == 3) fields.push_back("velocity_z");
+    if (s.eos == "ideal_gas") fields.push_back("internal_energy");
+    s.picture_field = r.one_of("validation.picture_field", fields);
+  }
   s.diagnostics_plots = r.strings("validation.diagnostics_plots");
   {
     // A plotted column must be one that diagnostics.csv or the case's probes.csv will hold.
