@@ -110,8 +110,8 @@ std::vector<std::string> standard_with(const std::string& mass) {
 }
 
 // BL 5.2: standard SPH within 2 % of the exact b at t = 0.008 s (BL Table 1: 2.02 against
-// 2.00). Measured (uniform start): +0.30 % with the summation masses; +31 % with m = rho V, whose surface
-// particles start at ~60 % of rho0, in tension, and tear the rim outwards.
+// 2.00). Measured (uniform start): +0.30 % with the summation masses; +31 % with m = rho V, whose
+// surface particles start at ~60 % of rho0, in tension, and tear the rim outwards.
 TEST(SummationMasses, StandardRandomDropWithinBonetLoksTwoPercent) {
   EXPECT_LT(std::abs(drop_b_error("elliptical_drop_random", standard_with("summation"))), 0.02);
   EXPECT_GT(std::abs(drop_b_error("elliptical_drop_random", standard_with("volume"))), 0.05);
