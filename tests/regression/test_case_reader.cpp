@@ -152,5 +152,34 @@ TEST(CaseReader, PictureTimesAndDiagnosticsPlots) {
             "pressure");
 }
 
+TEST(CaseReader, ConvergenceStudy) {
+  // A curve for the study to follow (the small dam break measures the surge front).
+  const std::string curve = kValid +
+                            "\n"
+                            "[[validation.curves]]\nprobe = \"surge_front\"\n"
+                            "reference = \"theory:bore\"\n";
+  const auto spec = test::spec_from(curve, {"validation.convergence_spacings=[0.02, 0.01, 0.005]",
+                                            "validation.convergence_sets=[\"scheme.cfl=0.1\"]"});
+  EXPECT_EQ(spec.convergence_spacings, (std::vector<double>{0.02, 0.01, 0.005}));
+  EXPECT_TRUE(spec.quick_convergence_spacings.empty());
+  EXPECT_EQ(spec.convergence_sets, std::vector<std::string>{"scheme.cfl=0.1"});
+  EXPECT_EQ(spec.convergence_curve, 0u);
+  expect_one_line_with(error_of(curve, {"validation.convergence_spacings=[0.01]"}),
+                       {"validation.convergence_spacings", "at least two"});
+  expect_one_line_with(error_of(curve, {"validation.quick_convergence_spacings=[0.01, 0.02]"}),
+                       {"validation.quick_convergence_spacings", "coarse to fine"});
+  expect_one_line_with(error_of(curve, {"validation.convergence_spacings=[0.02, -0.01]"}),
+                       {"validation.convergence_spacings", "> 0"});
+  expect_one_line_with(error_of(curve, {"validation.convergence_sets=[\"cfl\"]"}),
+                       {"validation.convergence_sets", "KEY=VALUE"});
+  expect_one_line_with(error_of(curve, {"validation.convergence_spacings=[0.02, 0.01]",
+                                        "validation.convergence_curve=1"}),
+                       {"validation.convergence_curve", "1 [[validation.curves]]"});
+  // A block with its own spacing would not be refined by particles.spacing.
+  expect_one_line_with(error_of(curve, {"validation.convergence_spacings=[0.02, 0.01]",
+                                        "fluid_blocks[0].spacing=0.01"}),
+                       {"validation.convergence_spacings", "fluid_blocks[0]", "lattice"});
+}
+
 }  // namespace
 }  // namespace flume

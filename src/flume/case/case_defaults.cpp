@@ -160,6 +160,14 @@ pictures = []          # s: particle pictures (PNG) of every configuration near 
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
 diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted against time for every
                         # configuration
+convergence_spacings = []  # m, coarse to fine: a convergence study, the case as written run at
+                           # each particles.spacing (every block on the lattice, without a spacing
+                           # of its own); the largest error of curve convergence_curve must fall
+                           # at each step (validate; the quick overrides do not apply)
+quick_convergence_spacings = []  # m: the study of validate --quick (empty: none)
+convergence_sets = []  # "KEY=VALUE" overrides of every run of the study (for example a stiffer
+                       # fluid and a shorter step, so that the spatial error is the one seen)
+convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 = the first)
 
 # [[fluid_blocks]]: at least one; each a body of fluid:
 #   min = {zero}, max = {one} (m), velocity = {zero} (m/s, at the centre), hydrostatic = true,

@@ -138,6 +138,44 @@ void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
   }
 }
 
+namespace {
+
+// validation.convergence_* (CaseSpec): the spacings fall strictly; every block follows
+// particles.spacing on the lattice (a random block's resolution is its count, a block with a
+// spacing of its own would keep it); the overrides are KEY=VALUE. The curve index is checked
+// once the curves are read.
+void read_convergence_study(const Reader& r, CaseSpec& s) {
+  for (const char* key :
+       {"validation.convergence_spacings", "validation.quick_convergence_spacings"}) {
+    const auto spacings = r.numbers(key);
+    if (spacings.size() == 1) r.fail(key, "a study needs at least two spacings (or none)");
+    for (std::size_t k = 0; k < spacings.size(); ++k) {
+      if (!(spacings[k] > 0.0)) r.fail(key, fmt::format("{} m: must be > 0", spacings[k]));
+      if (k > 0 && !(spacings[k] < spacings[k - 1]))
+        r.fail(key, fmt::format("{} m after {} m: must fall from coarse to fine", spacings[k],
+                                spacings[k - 1]));
+    }
+    if (!spacings.empty())
+      for (std::size_t b = 0; b < s.blocks.size(); ++b)
+        if (s.blocks[b].layout != "lattice" || s.blocks[b].spacing > 0.0)
+          r.fail(key, fmt::format("fluid_blocks[{}] is not a lattice that follows "
+                                  "particles.spacing: the study could not refine it",
+                                  b));
+    (std::string(key) == "validation.convergence_spacings" ? s.convergence_spacings
+                                                           : s.quick_convergence_spacings) =
+        spacings;
+  }
+  s.convergence_sets = r.strings("validation.convergence_sets");
+  for (const auto& o : s.convergence_sets)
+    if (o.find('=') == std::string::npos)
+      r.fail("validation.convergence_sets", fmt::format("\"{}\" is not KEY=VALUE", o));
+  const long curve = r.integer("validation.convergence_curve");
+  if (curve < 0) r.fail("validation.convergence_curve", "must be >= 0");
+  s.convergence_curve = static_cast<std::size_t>(curve);
+}
+
+}  // namespace
+
 void read_validation(const Reader& r, const toml::table& t, const std::filesystem::path& file,
                      CaseSpec& s) {
   s.quick = r.strings("validation.quick");
@@ -171,6 +209,7 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
         r.fail("validation.diagnostics_plots",
                fmt::format("\"{}\": not a column of diagnostics.csv or probes.csv", c));
   }
+  read_convergence_study(r, s);
   for (const auto& v : s.variants) {
     const Variant variant = parse_variant(v);
     if (variant.overrides.empty() || variant.label.empty())
@@ -270,6 +309,11 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       s.profiles.push_back(pc);
     }
   }
+  if ((!s.convergence_spacings.empty() || !s.quick_convergence_spacings.empty()) &&
+      !(s.convergence_curve < s.curves.size()))
+    r.fail("validation.convergence_curve",
+           fmt::format("= {}: the study follows one of the case's {} [[validation.curves]]",
+                       s.convergence_curve, s.curves.size()));
 }
 
 }  // namespace flume

@@ -208,6 +208,12 @@ struct CaseSpec {
   std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run
   std::vector<CurveCheck> curves;
   std::vector<ProfileCheck> profiles;
+  // A convergence study (validate): the case as written, with convergence_sets on top, run at
+  // each spacing, coarse to fine; curve convergence_curve's largest error must fall at each step.
+  std::vector<double> convergence_spacings;        // m; empty = no study
+  std::vector<double> quick_convergence_spacings;  // m, for validate --quick; empty = none
+  std::vector<std::string> convergence_sets;       // KEY=VALUE overrides of every run of the study
+  std::size_t convergence_curve = 0;               // index into curves
 };
 
 // |g|, m/s^2: the length of the case's gravity vector.

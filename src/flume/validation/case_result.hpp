@@ -3,6 +3,7 @@
 // inconsistent and corrected SPH side by side).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ struct SeriesResult {
   DensityRange density;
 };
 
+// One run of a convergence study (CaseSpec::convergence_spacings): the case as written at one
+// spacing, and the largest error over its points of the curve the study follows.
+struct StudyLevel {
+  double spacing = 0.0;  // m
+  RunResult run;
+  double max_error = std::numeric_limits<double>::quiet_NaN();  // NaN: no point compared
+};
+
 struct CaseResult {
   CaseSpec spec;
   std::vector<SeriesResult> series;     // [0] is the case as written; then the variants
@@ -39,7 +48,8 @@ struct CaseResult {
   std::vector<std::string> diagnostics_plots;  // per spec.diagnostics_plots entry: PNG or ""
   std::vector<double> profile_tolerances;      // per profile check (quick or full)
   std::vector<std::string> profile_plots;      // per profile check: PNG or ""
-  double coarse_spacing = 0.0;  // m, particles.spacing of the coarser runs; 0 = none run
+  double coarse_spacing = 0.0;    // m, particles.spacing of the coarser runs; 0 = none run
+  std::vector<StudyLevel> study;  // the convergence study, coarse to fine (empty: none run)
 };
 
 // Max and mean of the errors of a curve.

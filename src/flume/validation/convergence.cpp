@@ -28,6 +28,15 @@ std::vector<std::string> coarser_overrides(const CaseSpec& spec) {
   return sets;
 }
 
+std::string spacing_override(double spacing) {
+  return "particles.spacing=" + toml_float(spacing);
+}
+
+double observed_order(double coarse_error, double fine_error, double coarse_spacing,
+                      double fine_spacing) {
+  return observed_order(coarse_error, fine_error) / std::log2(coarse_spacing / fine_spacing);
+}
+
 double observed_order(double coarse_error, double fine_error) {
   const auto usable = [](double e) { return std::isfinite(e) && e > 0.0; };
   if (!usable(coarse_error) || !usable(fine_error)) return std::numeric_limits<double>::quiet_NaN();

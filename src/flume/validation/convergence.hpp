@@ -17,6 +17,15 @@ namespace flume {
 // spacing, so doubling its spacing would not coarsen it.
 std::vector<std::string> coarser_overrides(const CaseSpec& spec);
 
+// The --set override that runs a case at `spacing` (a level of a convergence study):
+// particles.spacing, written as a TOML float.
+std::string spacing_override(double spacing);
+
+// The order of convergence between two levels of a study: log(coarse_error / fine_error) /
+// log(coarse_spacing / fine_spacing). NaN when an error is not positive and finite.
+double observed_order(double coarse_error, double fine_error, double coarse_spacing,
+                      double fine_spacing);
+
 // log2(coarse / fine): the order of convergence seen when the spacing halves (1 for an error
 // proportional to the spacing). NaN when either error is not positive and finite.
 double observed_order(double coarse_error, double fine_error);

@@ -15,4 +15,10 @@ namespace flume {
 // written and reported for a variant (whose runs are reported, not gated, everywhere).
 bool add_convergence_rows(const CaseResult& cr, nlohmann::ordered_json& rows);
 
+// Appends one row per step of the case's convergence study (CaseResult::study, coarse to fine):
+// the followed curve's largest error at the finer spacing over that at the coarser one, which must
+// be below 1. A level that did not complete fails the rows it is part of. Returns false when a
+// row fails (every row is gated: the study runs the case as written).
+bool add_study_rows(const CaseResult& cr, nlohmann::ordered_json& rows);
+
 }  // namespace flume

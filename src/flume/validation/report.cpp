@@ -190,6 +190,8 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     if (cr.coarse_spacing > 0.0)
       for (const auto& s : cr.series)
         md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");
+    for (const auto& level : cr.study)
+      md += run_line(cr.spec.preset, level.run, level.spacing, " (convergence study)");
     if (!cr.overrides.empty()) {
       md += "\nEvery run with `--set`:";
       for (const auto& o : cr.overrides)
@@ -204,7 +206,7 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     if (!cr.series.front().run.completed) continue;
     for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
       md += curve_section(cr, c);
-    md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) +
+    md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) + study_section(cr) +
           diagnostics_section(cr) + pictures_section(cr);
   }
   return md;

@@ -41,6 +41,37 @@ std::string convergence_section(const CaseResult& cr) {
   return md;
 }
 
+std::string study_section(const CaseResult& cr) {
+  if (cr.study.empty()) return "";
+  const auto& check = cr.spec.curves.at(cr.spec.convergence_curve);
+  std::string sets;
+  for (const auto& o : cr.spec.convergence_sets)
+    sets += " `" + o + "`";
+  std::string md = fmt::format(
+      "\n### Convergence study: {} against {}\n\nThe case as written (`{}`) at each spacing{}; "
+      "the largest error of the curve over its points ({}). Order = log(error at the coarser "
+      "spacing / error at the finer) / log(coarser / finer spacing). Gated: the error falls at "
+      "each step.\n\n| spacing (m) | particles | largest error | order |\n|---|---|---|---|\n",
+      check.probe, check.source, cr.spec.preset, sets.empty() ? "" : ", with" + sets,
+      check.absolute ? "absolute" : "relative");
+  for (std::size_t k = 0; k < cr.study.size(); ++k) {
+    const StudyLevel& l = cr.study[k];
+    if (!l.run.completed) {
+      md += fmt::format("| {} | failed: {} | - | - |\n", l.spacing, l.run.error);
+      continue;
+    }
+    const std::string error = !std::isfinite(l.max_error) ? std::string("-")
+                              : check.absolute            ? fmt::format("{:.3g}", l.max_error)
+                                               : fmt::format("{:.3g} %", 100 * l.max_error);
+    const double order = k == 0 ? std::nan("")
+                                : observed_order(cr.study[k - 1].max_error, l.max_error,
+                                                 cr.study[k - 1].spacing, l.spacing);
+    md += fmt::format("| {} | {} | {} | {} |\n", l.spacing, l.run.particles, error,
+                      std::isnan(order) ? std::string("-") : fmt::format("{:.2f}", order));
+  }
+  return md;
+}
+
 std::string schemes_section(const CaseResult& cr) {
   if (cr.spec.curves.empty()) return "";
   std::string md = "\n### Every scheme side by side\n\nThe max and mean error of each curve (";

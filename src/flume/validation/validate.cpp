@@ -194,6 +194,46 @@ std::vector<double> profile_errors(const CaseSpec& spec, const std::filesystem::
   return errors;
 }
 
+// The points of curve `check` of a run whose probes are `probes`.
+std::vector<CurvePoint> compare_curve(const CaseSpec& spec, const CurveCheck& check,
+                                      const io::CsvData& probes) {
+  const auto ref = curve_reference(spec, check, probes);
+  const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
+  return compare_over_window(probes.column("time"), probes.column(check.probe),
+                             ref.column(check.reference_x), ref.column(check.reference_y),
+                             spec.time_scale, check.value_scale, check.absolute, check.statistic,
+                             check.window_from, to, check.at);
+}
+
+// The case's convergence study (CaseSpec::convergence_spacings, or the quick ones): the case as
+// written, with the user's --set, the study's overrides and the level's spacing, at each level.
+std::vector<StudyLevel> run_study(const std::filesystem::path& file, const std::string& name,
+                                  const CaseSpec& spec, const ValidateOptions& opt) {
+  std::vector<StudyLevel> study;
+  for (double spacing : opt.quick ? spec.quick_convergence_spacings : spec.convergence_spacings) {
+    auto sets = opt.sets;
+    sets.insert(sets.end(), spec.convergence_sets.begin(), spec.convergence_sets.end());
+    sets.push_back(spacing_override(spacing));
+    const CaseSpec level_spec = read_case(file, sets);
+    const auto dir = opt.out_dir / name / "convergence" / fmt::format("{}", spacing);
+    if (!opt.quiet)
+      std::cout << fmt::format("validate {}: convergence study at spacing {} m -> {}", name,
+                               spacing, dir.string())
+                << std::endl;
+    StudyLevel level;
+    level.spacing = spacing;
+    level.run = run_case(level_spec, RunOptions{dir, opt.threads, true});
+    if (level.run.completed) {
+      const auto points =
+          compare_curve(level_spec, level_spec.curves.at(level_spec.convergence_curve),
+                        io::read_csv(dir / "probes.csv"));
+      if (!points.empty()) level.max_error = summarize(points).max;
+    }
+    study.push_back(std::move(level));
+  }
+  return study;
+}
+
 CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   CaseResult cr;
   const auto file = bundled_case(name);
@@ -232,17 +272,9 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     // A case without curves (a shock tube) has no probes.csv.
     const bool curves = s.run.completed && !spec.curves.empty();
     probes.push_back(curves ? io::read_csv(run_dir / "probes.csv") : io::CsvData{});
-    if (curves) {
-      const auto t = probes.back().column("time");
-      for (const auto& check : spec.curves) {
-        const auto ref = curve_reference(spec, check, probes.back());
-        const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
-        s.curves.push_back(
-            compare_over_window(t, probes.back().column(check.probe), ref.column(check.reference_x),
-                                ref.column(check.reference_y), spec.time_scale, check.value_scale,
-                                check.absolute, check.statistic, check.window_from, to, check.at));
-      }
-    }
+    if (curves)
+      for (const auto& check : spec.curves)
+        s.curves.push_back(compare_curve(spec, check, probes.back()));
     if (s.run.completed) s.profile_errors = profile_errors(spec, run_dir);
     if (s.run.completed && spec.eos == "tait") {
       s.has_density_range = true;
@@ -263,6 +295,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     }
     cr.series.push_back(std::move(s));
   }
+  cr.study = run_study(file, name, cr.spec, opt);
   draw_pictures(opt.out_dir, cr);
   plot_diagnostics(opt.out_dir, cr);
   if (!cr.spec.profiles.empty() && cr.series.front().run.completed) plot_profiles(opt.out_dir, cr);
@@ -359,6 +392,7 @@ int validate(const ValidateOptions& opt) {
     results.push_back(validate_case(name, opt));
     all_pass = add_result_rows(results.back(), rows) && all_pass;
     all_pass = add_convergence_rows(results.back(), rows) && all_pass;
+    all_pass = add_study_rows(results.back(), rows) && all_pass;
   }
   io::write_file_atomic(opt.out_dir / "results.json", rows.dump(2) + "\n");
   io::write_file_atomic(opt.out_dir / "report.md", report_markdown(results, opt.quick));
