@@ -188,6 +188,8 @@ value_scale = 0.05715
     EXPECT_DOUBLE_EQ(summary["simulated_time"].get<double>(), 0.001) << run;
   }
   EXPECT_NE(slurp(out / "report.md").find("`case.end_time=0.001`"), std::string::npos);
+  // The report's list of runs says what each variant changed.
+  EXPECT_NE(slurp(out / "report.md").find("- `csph` (`scheme.preset=csph`):"), std::string::npos);
   // An unknown key is bad input, as for `flume run`.
   const auto bad = flume_env(env, "validate case --quiet --out " + out.string() + " --set a.b=1");
   EXPECT_EQ(bad.status, 2);

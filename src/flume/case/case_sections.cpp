@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "flume/case/table_reader.hpp"
 #include "flume/sim/diagnostics_columns.hpp"
@@ -145,8 +147,10 @@ namespace {
 // spacing of its own would keep it); the overrides are KEY=VALUE. The curve index is checked
 // once the curves are read.
 void read_convergence_study(const Reader& r, CaseSpec& s) {
-  for (const char* key :
-       {"validation.convergence_spacings", "validation.quick_convergence_spacings"}) {
+  const std::pair<const char*, std::vector<double>*> studies[] = {
+      {"validation.convergence_spacings", &s.convergence_spacings},
+      {"validation.quick_convergence_spacings", &s.quick_convergence_spacings}};
+  for (const auto& [key, out] : studies) {
     const auto spacings = r.numbers(key);
     if (spacings.size() == 1) r.fail(key, "a study needs at least two spacings (or none)");
     for (std::size_t k = 0; k < spacings.size(); ++k) {
@@ -161,9 +165,7 @@ void read_convergence_study(const Reader& r, CaseSpec& s) {
           r.fail(key, fmt::format("fluid_blocks[{}] is not a lattice that follows "
                                   "particles.spacing: the study could not refine it",
                                   b));
-    (std::string(key) == "validation.convergence_spacings" ? s.convergence_spacings
-                                                           : s.quick_convergence_spacings) =
-        spacings;
+    *out = spacings;
   }
   s.convergence_sets = r.strings("validation.convergence_sets");
   for (const auto& o : s.convergence_sets)

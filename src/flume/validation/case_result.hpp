@@ -16,6 +16,7 @@ namespace flume {
 
 struct SeriesResult {
   std::string label;  // "main" configuration's preset, or the variant's override value
+  std::vector<std::string> overrides;  // a variant's KEY=VALUE (empty for the case as written)
   RunResult run;
   std::vector<std::vector<CurvePoint>> curves;  // one per CaseSpec::curves entry
   std::vector<double> profile_errors;           // one per CaseSpec::profiles entry (L1)

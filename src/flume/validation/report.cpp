@@ -21,7 +21,16 @@ ErrorSummary summarize(const std::vector<CurvePoint>& points) {
 
 namespace {
 
-// `note` follows the label: " (coarse)" for a convergence run.
+// A variant's overrides as a run line's note: " (`KEY=VALUE`, ...)"; "" for the case as written.
+std::string variant_note(const SeriesResult& s) {
+  if (s.overrides.empty()) return "";
+  std::string note = " (";
+  for (std::size_t k = 0; k < s.overrides.size(); ++k)
+    note += (k ? ", `" : "`") + s.overrides[k] + "`";
+  return note + ")";
+}
+
+// `note` follows the label: " (coarse)" for a convergence run, a variant's overrides.
 std::string run_line(const std::string& label, const RunResult& run, double spacing,
                      const std::string& note = "") {
   if (!run.completed) return fmt::format("- `{}`{}: **failed**: {}\n", label, note, run.error);
@@ -186,7 +195,7 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     md += fmt::format("\n## {}\n\n{}\n\nRuns (scheme, kernel `{}`, h/dx = {}):\n\n", cr.spec.name,
                       cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
     for (const auto& s : cr.series)
-      md += run_line(s.label, s.run, cr.spec.spacing);
+      md += run_line(s.label, s.run, cr.spec.spacing, variant_note(s));
     if (cr.coarse_spacing > 0.0)
       for (const auto& s : cr.series)
         md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");

@@ -250,12 +250,14 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     cr.profile_tolerances.push_back(opt.quick ? check.quick_tolerance : check.tolerance);
 
   std::vector<std::pair<std::string, std::vector<std::string>>> configs{{cr.spec.preset, base}};
+  std::vector<std::vector<std::string>> own_overrides{{}};  // each variant's, for the report
   for (const auto& v :
        opt.quick && !cr.spec.quick_variants ? std::vector<std::string>{} : cr.spec.variants) {
     const Variant variant = parse_variant(v);
     auto overrides = base;
     overrides.insert(overrides.end(), variant.overrides.begin(), variant.overrides.end());
     configs.emplace_back(variant.label, overrides);
+    own_overrides.push_back(variant.overrides);
   }
   // Profile cases also run every configuration at twice the spacing, to show convergence.
   const auto coarse =
@@ -268,6 +270,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
       std::cout << fmt::format("validate {}: {} -> {}", name, label, run_dir.string()) << std::endl;
     SeriesResult s;
     s.label = label;
+    s.overrides = own_overrides[cr.series.size()];
     s.run = run_case(spec, RunOptions{run_dir, opt.threads, true});
     // A case without curves (a shock tube) has no probes.csv.
     const bool curves = s.run.completed && !spec.curves.empty();
