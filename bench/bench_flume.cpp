@@ -126,7 +126,7 @@ BENCHMARK(BM_SweepContinuity)
 
 void BM_SweepCsphCorrection(benchmark::State& state) {
   Prepared p(state.range(0));
-  CorrectedVelocityGradient<2, Correction::mixed> correction{p.ps};
+  CorrectedVelocityGradient<2, Correction::mixed, false> correction{p.ps};
   for (auto _ : state) {
     sweep<2, Kernel>(p.ctx(), p.ps, "correction", correction);
   }

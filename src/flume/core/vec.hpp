@@ -140,6 +140,54 @@ constexpr Mat<D> outer(const Vec<D>& a, const Vec<D>& b) {
   return r;
 }
 
+// Symmetric D x D matrix, its upper triangle stored row by row (D (D + 1) / 2 numbers): what a
+// sweep accumulates for a sum of symmetric terms (x (x) x F of a radial kernel's gradient), in
+// 3 numbers instead of 4 in 2D, 6 instead of 9 in 3D.
+template <int D>
+struct SymMat {
+  static constexpr std::size_t kSize = static_cast<std::size_t>(D * (D + 1) / 2);
+  std::array<double, kSize> e{};
+
+  constexpr SymMat& operator+=(const SymMat& o) {
+    for (std::size_t k = 0; k < kSize; ++k)
+      e[k] += o.e[k];
+    return *this;
+  }
+  constexpr SymMat& operator-=(const SymMat& o) {
+    for (std::size_t k = 0; k < kSize; ++k)
+      e[k] -= o.e[k];
+    return *this;
+  }
+  constexpr SymMat& operator*=(double s) {
+    for (auto& x : e)
+      x *= s;
+    return *this;
+  }
+  friend constexpr SymMat operator*(SymMat a, double s) { return a *= s; }
+  // The full matrix.
+  constexpr Mat<D> full() const {
+    Mat<D> m;
+    std::size_t k = 0;
+    for (int r = 0; r < D; ++r)
+      for (int c = r; c < D; ++c) {
+        m(r, c) = e[k];
+        m(c, r) = e[k++];
+      }
+    return m;
+  }
+};
+
+// a (x) b for parallel a and b (b = a s), which is symmetric: its upper triangle a_r b_c, c >= r.
+template <int D>
+constexpr SymMat<D> outer_parallel(const Vec<D>& a, const Vec<D>& b) {
+  SymMat<D> m;
+  std::size_t k = 0;
+  for (int r = 0; r < D; ++r)
+    for (int c = r; c < D; ++c)
+      m.e[k++] = a[r] * b[c];
+  return m;
+}
+
 // Double contraction a : b.
 template <int D>
 constexpr double ddot(const Mat<D>& a, const Mat<D>& b) {

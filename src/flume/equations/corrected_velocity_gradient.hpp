@@ -35,6 +35,8 @@
 // the 1176 particles of a jittered drop.
 #pragma once
 
+#include <type_traits>
+
 #include "flume/core/particle_set.hpp"
 #include "flume/core/singular_value.hpp"
 #include "flume/equations/correction.hpp"
@@ -51,20 +53,47 @@ bool correction_usable(const Mat<D>& moment) {
   return smallest_singular_value(moment) >= kMinSingularValue;
 }
 
-template <int D, Correction C>
+// The sums the sweep gathers, in parts, so that a sweep carries only what its finish uses
+// (every number of an accumulator costs a load, an add and a store for each pair's j):
+// the moment matrix always; S_a, gamma_a and the W moment with the kernel correction; the
+// velocity sums only when the velocity gradient is wanted (a viscous stress).
+// With u = v_b - v_a (velocity) or x_b - x_a (moment):
+template <int D>
+struct MomentSums {
+  SymMat<D> moment_dw;  // sum_b V_b (x_b - x_a) (x) grad W (symmetric: grad W is along x_ab)
+};
+template <int D>
+struct KernelSums {
+  double s;          // sum_b V_b W                  S_a, BL (53)
+  Vec<D> gradw;      // sum_b V_b grad W             S_a gamma_a, BL (57)
+  Vec<D> moment_w;   // sum_b V_b (x_b - x_a) W
+};
+template <int D>
+struct VelocitySums {
+  Mat<D> grad_dw;    // sum_b V_b (v_b - v_a) (x) grad W
+};
+template <int D>
+struct KernelVelocitySums {
+  Vec<D> grad_w;     // sum_b V_b (v_b - v_a) W
+};
+// The parts left out (distinct empty bases, so that they take no room).
+struct NoKernelSums {};
+struct NoVelocitySums {};
+struct NoKernelVelocitySums {};
+
+// Velocity: whether the sweep also gives grad v_a (ps.grad_v); without it only S_a, gamma_a
+// and L_a are computed.
+template <int D, Correction C, bool Velocity>
 struct CorrectedVelocityGradient {
-  // The uncorrected sums; with u = v_b - v_a (velocity) or x_b - x_a (moment):
-  struct Acc {
-    double s;          // sum_b V_b W                  S_a, BL (53)
-    Vec<D> gradw;      // sum_b V_b grad W             S_a gamma_a, BL (57)
-    Mat<D> grad_dw;    // sum_b V_b (v_b - v_a) (x) grad W
-    Vec<D> grad_w;     // sum_b V_b (v_b - v_a) W
-    Mat<D> moment_dw;  // sum_b V_b (x_b - x_a) (x) grad W
-    Vec<D> moment_w;   // sum_b V_b (x_b - x_a) W
-  };
+  static constexpr bool kKernel = corrects_kernel(C);
+  struct Acc : MomentSums<D>,
+               std::conditional_t<kKernel, KernelSums<D>, NoKernelSums>,
+               std::conditional_t<Velocity, VelocitySums<D>, NoVelocitySums>,
+               std::conditional_t<kKernel && Velocity, KernelVelocitySums<D>,
+                                  NoKernelVelocitySums> {};
   using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   // Without the kernel correction every term carries grad W: no self pair (own.hpp).
-  static constexpr bool kGradientOnly = !corrects_kernel(C);
+  static constexpr bool kGradientOnly = !kKernel;
   ParticleSet<D>& ps;
 
   Acc init(std::size_t) const { return {}; }
@@ -73,35 +102,42 @@ struct CorrectedVelocityGradient {
   // products with grad W keep theirs).
   void pair(Acc& acc_i, Acc& acc_j, Own vol_i, Own vol_j, std::size_t i, std::size_t j,
             const Pair<D>& g) const {
-    const Vec<D> dv = ps.v[j] - ps.v[i];
-    const Vec<D> dv_i = dv * vol_j, dv_j = dv * vol_i;
-    const Vec<D> dx_i = g.xij * (-vol_j), dx_j = g.xij * (-vol_i);
-    acc_i.grad_dw += outer(dv_i, g.gradw);
-    acc_i.moment_dw += outer(dx_i, g.gradw);
-    acc_j.grad_dw += outer(dv_j, g.gradw);
-    acc_j.moment_dw += outer(dx_j, g.gradw);
-    if constexpr (corrects_kernel(C)) {
+    // (x_b - x_a) (x) grad W = -x_ij (x) grad W for b = j and for b = i.
+    const SymMat<D> xx = outer_parallel(g.xij, g.gradw);
+    acc_i.moment_dw -= xx * vol_j;
+    acc_j.moment_dw -= xx * vol_i;
+    if constexpr (kKernel) {
       acc_i.s += vol_j * g.w;
       acc_i.gradw += g.gradw * vol_j;
-      acc_i.grad_w += dv_i * g.w;
-      acc_i.moment_w += dx_i * g.w;
+      acc_i.moment_w -= g.xij * (vol_j * g.w);
       acc_j.s += vol_i * g.w;
       acc_j.gradw -= g.gradw * vol_i;
-      acc_j.grad_w -= dv_j * g.w;
-      acc_j.moment_w -= dx_j * g.w;
+      acc_j.moment_w += g.xij * (vol_i * g.w);
+    }
+    if constexpr (Velocity) {
+      const Vec<D> dv = ps.v[j] - ps.v[i];
+      const Vec<D> dv_i = dv * vol_j, dv_j = dv * vol_i;
+      acc_i.grad_dw += outer(dv_i, g.gradw);
+      acc_j.grad_dw += outer(dv_j, g.gradw);
+      if constexpr (kKernel) {
+        acc_i.grad_w += dv_i * g.w;
+        acc_j.grad_w -= dv_j * g.w;
+      }
     }
   }
   void finish(Acc& acc, std::size_t i) const {
-    Mat<D> grad = acc.grad_dw, moment = acc.moment_dw;
-    if constexpr (corrects_kernel(C)) {
+    Mat<D> moment = acc.moment_dw.full();
+    [[maybe_unused]] Mat<D> grad;
+    if constexpr (Velocity) grad = acc.grad_dw;
+    if constexpr (kKernel) {
       const double s = acc.s;  // > 0: the self term V_a W(0) is always there
       const double inv_s = 1.0 / s;
       const Vec<D> gamma = acc.gradw * inv_s;  // BL (57)
       ps.shepard[i] = s;
       ps.gamma[i] = gamma;
       // The sums with grad W~_b(x_a) = (grad W - W gamma_a) / S_a.
-      grad = (grad - outer(acc.grad_w, gamma)) * inv_s;
       moment = (moment - outer(acc.moment_w, gamma)) * inv_s;
+      if constexpr (Velocity) grad = (grad - outer(acc.grad_w, gamma)) * inv_s;
     }
     // How far BL (41) is from holding before L_a: |M_a - I| (Frobenius), for the snapshots.
     const Mat<D> off = moment - Mat<D>::identity();
@@ -109,10 +145,10 @@ struct CorrectedVelocityGradient {
     if (corrects_gradient(C) && correction_usable(moment)) {
       const Mat<D> inv = inverse(moment);
       ps.L[i] = transpose(inv);
-      ps.grad_v[i] = grad * inv;
+      if constexpr (Velocity) ps.grad_v[i] = grad * inv;
     } else {
       ps.L[i] = Mat<D>::identity();
-      ps.grad_v[i] = grad;
+      if constexpr (Velocity) ps.grad_v[i] = grad;
     }
   }
 };

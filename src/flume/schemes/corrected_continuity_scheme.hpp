@@ -7,7 +7,7 @@
 // For mixed and shepard, sum_b V_b grad W~_b(x_a) = 0 (BL (57), erratum 2), so erratum 9's
 // sigma_a term vanishes and the force is BL (59)'s; for the gradient correction it does not.
 // Algorithm, one step:
-//   1. sweep: S_a, gamma_a, L_a, grad v_a                   BL (53), (57), (43)/(55), (45)/(58)
+//   1. sweep: S_a, gamma_a, L_a, grad v_a (if viscous)      BL (53), (57), (43)/(55), (45)/(58)
 //   2. p_a = kappa((rho_a/rho0)^gamma - 1); refresh ghosts   BL (60)
 //   3. sweep: a_a = g + internal force                       BL (59) / erratum 9
 //   -- leap-frog kick --
@@ -30,17 +30,25 @@ class CorrectedContinuityScheme final : public EvolvedDensityScheme<D, Kernel> {
   explicit CorrectedContinuityScheme(Physics<D> phys) : phys_(std::move(phys)) {}
 
   unsigned fields() const override {
-    return kFieldDrho | kFieldGradV | kFieldL | (corrects_kernel(C) ? kFieldShepard : 0u) |
-           (phys_.mu > 0.0 ? kFieldStress : 0u);
+    return kFieldDrho | kFieldL | (corrects_kernel(C) ? kFieldShepard : 0u) |
+           (phys_.mu > 0.0 ? kFieldGradV | kFieldStress : 0u);
   }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
-    CorrectedVelocityGradient<D, C> correction{ps};
-    sweep<D, Kernel>(ctx, ps, "correction", correction);
+    // The velocity gradient only where the set carries it (fields(): for the viscous stress);
+    // inviscid, the sweep carries 8 sums a particle instead of 15 in 2D.
+    const bool velocity = ps.uses(kFieldGradV);
+    if (velocity) {
+      CorrectedVelocityGradient<D, C, true> correction{ps};
+      sweep<D, Kernel>(ctx, ps, "correction", correction);
+    } else {
+      CorrectedVelocityGradient<D, C, false> correction{ps};
+      sweep<D, Kernel>(ctx, ps, "correction", correction);
+    }
     if constexpr (corrects_kernel(C)) halo.update_shepard(ps);
     halo.update_corrections(ps);
-    halo.update_velocity_gradient(ps);
+    if (velocity) halo.update_velocity_gradient(ps);
     if (phys_.mu > 0.0) update_deviatoric_stress(ps, phys_.mu);
     update_pressure(ps, phys_, halo);
 

@@ -44,14 +44,14 @@ class WeakSphScheme final : public EvolvedDensityScheme<D, Kernel> {
   unsigned fields() const override {
     return kFieldDrho | (phys_.eos.is_gas() ? kFieldEnergy : 0u) |
            (evolving_h_ ? kFieldSmoothingRate : 0u) |
-           (Gradient::kRenormalized ? kFieldL | kFieldGradV : 0u) | stress_fields(phys_);
+           (Gradient::kRenormalized ? kFieldL : 0u) | stress_fields(phys_);
   }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
                                const StepLimit<D>& limit) const override {
     if constexpr (Gradient::kRenormalized) {
-      // B_i = L_i; the sweep's velocity gradient (corrected, BL (43)) is a by-product.
-      CorrectedVelocityGradient<D, Correction::gradient> renormalization{ps};
+      // B_i = L_i; no velocity gradient (the stress terms take BL (22)'s, update_viscous_stress).
+      CorrectedVelocityGradient<D, Correction::gradient, false> renormalization{ps};
       sweep<D, Kernel>(ctx, ps, "correction", renormalization);
       halo.update_corrections(ps);
     }
