@@ -64,17 +64,17 @@ struct MomentSums {
 };
 template <int D>
 struct KernelSums {
-  double s;          // sum_b V_b W                  S_a, BL (53)
-  Vec<D> gradw;      // sum_b V_b grad W             S_a gamma_a, BL (57)
-  Vec<D> moment_w;   // sum_b V_b (x_b - x_a) W
+  double s;         // sum_b V_b W                  S_a, BL (53)
+  Vec<D> gradw;     // sum_b V_b grad W             S_a gamma_a, BL (57)
+  Vec<D> moment_w;  // sum_b V_b (x_b - x_a) W
 };
 template <int D>
 struct VelocitySums {
-  Mat<D> grad_dw;    // sum_b V_b (v_b - v_a) (x) grad W
+  Mat<D> grad_dw;  // sum_b V_b (v_b - v_a) (x) grad W
 };
 template <int D>
 struct KernelVelocitySums {
-  Vec<D> grad_w;     // sum_b V_b (v_b - v_a) W
+  Vec<D> grad_w;  // sum_b V_b (v_b - v_a) W
 };
 // The parts left out (distinct empty bases, so that they take no room).
 struct NoKernelSums {};
@@ -86,11 +86,11 @@ struct NoKernelVelocitySums {};
 template <int D, Correction C, bool Velocity>
 struct CorrectedVelocityGradient {
   static constexpr bool kKernel = corrects_kernel(C);
-  struct Acc : MomentSums<D>,
-               std::conditional_t<kKernel, KernelSums<D>, NoKernelSums>,
-               std::conditional_t<Velocity, VelocitySums<D>, NoVelocitySums>,
-               std::conditional_t<kKernel && Velocity, KernelVelocitySums<D>,
-                                  NoKernelVelocitySums> {};
+  struct Acc
+      : MomentSums<D>,
+        std::conditional_t<kKernel, KernelSums<D>, NoKernelSums>,
+        std::conditional_t<Velocity, VelocitySums<D>, NoVelocitySums>,
+        std::conditional_t<kKernel && Velocity, KernelVelocitySums<D>, NoKernelVelocitySums> {};
   using Own = double;  // the volume V_b = m_b / rho_b, computed once per particle (own.hpp)
   // Without the kernel correction every term carries grad W: no self pair (own.hpp).
   static constexpr bool kGradientOnly = !kKernel;

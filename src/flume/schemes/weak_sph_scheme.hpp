@@ -43,8 +43,8 @@ class WeakSphScheme final : public EvolvedDensityScheme<D, Kernel> {
   bool evolves_smoothing_length() const override { return evolving_h_; }
   unsigned fields() const override {
     return kFieldDrho | (phys_.eos.is_gas() ? kFieldEnergy : 0u) |
-           (evolving_h_ ? kFieldSmoothingRate : 0u) |
-           (Gradient::kRenormalized ? kFieldL : 0u) | stress_fields(phys_);
+           (evolving_h_ ? kFieldSmoothingRate : 0u) | (Gradient::kRenormalized ? kFieldL : 0u) |
+           stress_fields(phys_);
   }
 
   double compute_accelerations(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
