@@ -23,7 +23,10 @@ double smallest_symmetric_eigenvalue(const Mat<D>& a) {
   } else if constexpr (D == 2) {
     const double mean = 0.5 * (a(0, 0) + a(1, 1));
     const double half_diff = 0.5 * (a(0, 0) - a(1, 1));
-    return mean - std::hypot(half_diff, a(0, 1));
+    // sqrt(x^2 + y^2), not std::hypot: a library call per particle (3 % of a CSPH step), whose
+    // guard against overflow the moment matrices (entries ~1, or ~h^2 in BL (47)) do not need;
+    // an overflowing matrix gives -inf here, and so sigma_min = 0: the correction is dropped.
+    return mean - std::sqrt(half_diff * half_diff + a(0, 1) * a(0, 1));
   } else {
     // A = q I + p B with q = tr A / 3 and B of unit "radius": the eigenvalues are
     // q + 2 p cos(phi + 2 pi k / 3), phi = acos(det B / 2) / 3; the smallest has k = 1.

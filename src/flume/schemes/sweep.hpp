@@ -16,20 +16,25 @@
 // Vectorisation: the candidates of each run of cells are evaluated in blocks of kLanes without a
 // branch (pair_block), the equations inlined; candidates beyond the support give exact zeros.
 // Threads: the cell layers along the slowest axis are cut into slabs; a pair touches the
-// accumulators of its own layer and the next only, so the even slabs run in parallel, then the
-// odd ones. Every accumulator then receives its terms in an order fixed by the positions alone:
-// results are bit-identical for any thread count.
+// accumulators of its own layer and the next only, so the even slabs run in parallel, and an
+// odd slab runs once both its even neighbours are done (sweep_pairs). Every accumulator then
+// receives its terms in an order fixed by the positions alone: results are bit-identical for
+// any thread count.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <thread>
 #include <tuple>
 #include <type_traits>
 #include <utility>
+
+#include <omp.h>
 
 #include "flume/core/particle_set.hpp"
 #include "flume/equations/own.hpp"
@@ -444,28 +449,77 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
   }
 }
 
+// The slabs of a grid: kSlabLayers cell layers along the slowest axis each.
+template <int D>
+long slab_count(const CellGrid<D>& grid) {
+  const long layers = static_cast<long>(grid.dims()[D - 1]);
+  return (layers + kSlabLayers - 1) / kSlabLayers;
+}
+
+// The order in which the slabs are handed out: the even slabs `lead` ahead, then odd and even
+// in turn, then what is left: 0, 2, 4, 6, 1, 8, 3, 10, 5, ... for lead 4. Slab k of the order.
+// Every odd slab comes after both its even neighbours (lead >= 2), so that a thread that takes
+// an odd slab finds them done, or being finished by another thread, and never waits for a
+// slab that no thread has taken (no deadlock).
+inline long slab_in_order(long k, long slabs, long lead) {
+  const long evens = (slabs + 1) / 2, odds = slabs / 2;
+  const long first = std::min(lead, evens);
+  if (k < first) return 2 * k;
+  const long m = k - first;
+  const long alternating = std::min(odds, evens - first);  // (odd, even) couples
+  if (m < 2 * alternating) return m % 2 == 0 ? 2 * (m / 2) + 1 : 2 * (first + m / 2);
+  const long rest = m - 2 * alternating;
+  return odds > alternating ? 2 * (alternating + rest) + 1 : 2 * (first + alternating + rest);
+}
+
+// What the threads of a sweep share to hand out the slabs: flag[0] is the next position in
+// the order, flag[1 + s] is set once slab s is done. A type of its own for the workspace.
+struct SlabFlag {
+  int v;
+};
+
+// Scheduling. Slab s writes the accumulators of its own layers and of the next slab's first
+// layer, so neighbouring slabs cannot run at the same time; and for results that do not depend
+// on the thread count every accumulator must receive its terms in one order: the even slabs'
+// before the odd slabs' (the order of a single thread doing all even slabs, then all odd ones).
+// An odd slab therefore starts once its two even neighbours are done; the even slabs never
+// touch each other. The slabs go out in slab_in_order's order and a thread that takes an odd
+// slab waits for its neighbours' flags: no barrier between the even and the odd slabs, at which
+// a thread idled until the other finished its last even slab (up to one slab per sweep).
 template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, class OwnTuple,
           std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
-                 const OwnTuple& own, std::index_sequence<I...> seq) {
+                 const OwnTuple& own, SlabFlag* flags, std::index_sequence<I...> seq) {
   using Accs = std::tuple<typename std::tuple_element_t<I, AccTuple>::Value...>;
   const CellGrid<D>& grid = ctx.grid;
   const std::size_t layer = grid.strides()[D - 1];
-  const long layers = static_cast<long>(grid.dims()[D - 1]);
-  const long slabs = (layers + kSlabLayers - 1) / kSlabLayers;
+  const auto layers = static_cast<std::size_t>(grid.dims()[D - 1]);
+  const long slabs = slab_count(grid);
+  // The even slabs' lead: twice the threads, so that an odd slab's later neighbour went out
+  // about as many slabs before it as there are threads at work.
+  const long lead = 2 + 2 * static_cast<long>(omp_get_num_threads());
+  auto done = [&](long s) { return std::atomic_ref<int>(flags[1 + s].v); };
   // Per thread: i's shares of the pairs of a block, and their partial sums.
   std::tuple<Shares<std::tuple_element_t<I, Accs>>...> shares;
-  for (int phase = 0; phase < 2; ++phase) {
-#pragma omp for schedule(dynamic, 1)
-    for (long s = phase; s < slabs; s += 2) {
-      const std::size_t c_begin = static_cast<std::size_t>(s) * kSlabLayers * layer;
-      const std::size_t c_end = std::min(static_cast<std::size_t>(s + 1) * kSlabLayers,
-                                         static_cast<std::size_t>(layers)) *
-                                layer;
-      slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin,
-                                      c_end, seq);
+  std::atomic_ref<int> next(flags[0].v);
+  for (;;) {
+    const long k = next.fetch_add(1, std::memory_order_relaxed);
+    if (k >= slabs) break;
+    const long s = slab_in_order(k, slabs, lead);
+    if (s % 2 == 1) {
+      for (const long e : {s - 1, s + 1})
+        if (e < slabs)
+          while (done(e).load(std::memory_order_acquire) == 0)
+            std::this_thread::yield();
     }
+    const std::size_t c_begin = static_cast<std::size_t>(s) * kSlabLayers * layer;
+    const std::size_t c_end =
+        std::min(static_cast<std::size_t>(s + 1) * kSlabLayers, layers) * layer;
+    slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin,
+                                    c_end, seq);
+    done(s).store(1, std::memory_order_release);
   }
+#pragma omp barrier
 }
 
 // The store `slot` of eq's per-particle factors, for n particles (empty when it has none).
@@ -503,6 +557,9 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
   const auto nn = static_cast<long>(n);
   const auto n_all = static_cast<long>(ps.size());
   double least = std::numeric_limits<double>::infinity();
+  auto& flags = ctx.work.template buffer<SlabFlag>(
+      0, static_cast<std::size_t>(slab_count(ctx.grid)) + 1);
+  std::fill(flags.begin(), flags.end(), SlabFlag{0});
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -519,9 +576,9 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
       (std::get<I>(acc).set(i, std::get<I>(eqt).init(i)), ...);
     }
     if (ctx.uniform_h > 0.0)
-      sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, seq);
+      sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, flags.data(), seq);
     else
-      sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, seq);
+      sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, flags.data(), seq);
     auto finish = [&](std::size_t i) {
       auto one = [&](const auto& eq, const auto& store) {
         auto a = store.get(i);
