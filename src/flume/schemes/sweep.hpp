@@ -515,8 +515,8 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
     const std::size_t c_begin = static_cast<std::size_t>(s) * kSlabLayers * layer;
     const std::size_t c_end =
         std::min(static_cast<std::size_t>(s + 1) * kSlabLayers, layers) * layer;
-    slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin,
-                                    c_end, seq);
+    slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin, c_end,
+                                    seq);
     done(s).store(1, std::memory_order_release);
   }
 #pragma omp barrier
@@ -557,8 +557,8 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
   const auto nn = static_cast<long>(n);
   const auto n_all = static_cast<long>(ps.size());
   double least = std::numeric_limits<double>::infinity();
-  auto& flags = ctx.work.template buffer<SlabFlag>(
-      0, static_cast<std::size_t>(slab_count(ctx.grid)) + 1);
+  auto& flags =
+      ctx.work.template buffer<SlabFlag>(0, static_cast<std::size_t>(slab_count(ctx.grid)) + 1);
   std::fill(flags.begin(), flags.end(), SlabFlag{0});
 #pragma omp parallel
   {
