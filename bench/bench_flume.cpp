@@ -148,6 +148,21 @@ void BM_SweepCsphForce(benchmark::State& state) {
 }
 BENCHMARK(BM_SweepCsphForce)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// CSPH's continuity group, BL (2) with the corrected divergence of BL (55): the third sweep of
+// a CSPH step (the leap-frog's rate with v^{n+1/2}).
+void BM_SweepCsphContinuity(benchmark::State& state) {
+  Prepared p(state.range(0));
+  CorrectedContinuity<2, Correction::mixed> continuity{p.ps, p.ps.v_half};
+  for (auto _ : state)
+    sweep<2, Kernel>(p.ctx(), p.ps, "continuity", continuity);
+  count_rate(state, p);
+}
+BENCHMARK(BM_SweepCsphContinuity)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 }  // namespace
 }  // namespace flume
 
