@@ -1,12 +1,12 @@
-// The order in which a sweep hands out its slabs (schemes/sweep.hpp): every slab once, and each
-// odd slab after both its even neighbours. That is what keeps a sweep's results independent of
+// The order in which a sweep hands out its slabs (schemes/slab_schedule.hpp): every slab once, and
+// each odd slab after both its even neighbours. That is what keeps a sweep's results independent of
 // the thread count (each accumulator gets the even slab's terms first) and free of deadlock (a
 // thread waits only for slabs already handed out).
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "flume/schemes/sweep.hpp"
+#include "flume/schemes/slab_schedule.hpp"
 
 namespace flume {
 namespace {
