@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 
 #include "flume/neighbors/cell_grid.hpp"
 
@@ -39,5 +40,28 @@ inline long slab_in_order(long k, long slabs, long lead) {
 struct SlabFlag {
   int v;
 };
+
+// Marks a slab done and wakes a thread asleep on its flag (no system call when none is).
+inline void mark_done(std::atomic_ref<int> flag) {
+  flag.store(1, std::memory_order_release);
+  flag.notify_all();
+}
+
+// Waits until a slab is done. Spins first: when every thread has a core the neighbour is being
+// finished and the wait is short, and a sleep costs a kernel wake-up (tens of microseconds on a
+// virtual machine). Then sleeps in the kernel (std::atomic_ref::wait): with more threads than
+// free cores (another job, ctest -j) the neighbour's thread may be off its core, and a waiter
+// that kept spinning or yielding held the core it needs; two 2-thread runs side by side on two
+// cores spent their time in such waits.
+inline void wait_done(std::atomic_ref<int> flag) {
+  constexpr int kSpins = 1 << 18;  // a few milliseconds, as long as libgomp spins at a barrier
+  for (int k = 0; k < kSpins; ++k) {
+    if (flag.load(std::memory_order_acquire) != 0) return;
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+  flag.wait(0, std::memory_order_acquire);
+}
 
 }  // namespace flume::detail

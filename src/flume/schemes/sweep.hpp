@@ -29,7 +29,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <thread>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -342,16 +341,14 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
     const long s = slab_in_order(k, slabs, lead);
     if (s % 2 == 1) {
       for (const long e : {s - 1, s + 1})
-        if (e < slabs)
-          while (done(e).load(std::memory_order_acquire) == 0)
-            std::this_thread::yield();
+        if (e < slabs) wait_done(done(e));
     }
     const std::size_t c_begin = static_cast<std::size_t>(s) * kSlabLayers * layer;
     const std::size_t c_end =
         std::min(static_cast<std::size_t>(s + 1) * kSlabLayers, layers) * layer;
     slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin, c_end,
                                     seq);
-    done(s).store(1, std::memory_order_release);
+    mark_done(done(s));
   }
 #pragma omp barrier
 }
