@@ -226,23 +226,29 @@ TEST(Sweep, MirrorGhostsEveryPairOnce) {
   expect_all_pairs_once<3>(uniform_cloud<3>(1500, 0.0, 1.0, 8), 0.2, &walls3);
 }
 
+// A square box, and a tank four times as long as it is deep (few slabs holding particles).
 TEST(Sweep, SumsAreBitIdenticalForAnyThreadCount) {
   const ThreadCount restore;
-  const auto x = uniform_cloud<2>(4000, 0.0, 1.0, 9);
-  auto walls = test::open_box<2>(0.0, 1.0);
-  for (auto& axis : walls.kind)
-    axis = {WallKind::free_slip, WallKind::free_slip};
-  std::vector<std::vector<PairTally>> runs;
-  for (const int threads : {1, 2, 3}) {
-    omp_set_num_threads(threads);
-    runs.push_back(sweep_tally<2>(particles<2>(x, 0.02), &walls));
-  }
-  for (std::size_t r = 1; r < runs.size(); ++r)
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      ASSERT_EQ(runs[r][i].weighted, runs[0][i].weighted)
-          << "threads run " << r << ", particle " << i;
-      ASSERT_EQ(runs[r][i].count, runs[0][i].count);
+  for (const double length : {1.0, 4.0}) {
+    auto x = uniform_cloud<2>(4000, 0.0, 1.0, 9);
+    for (auto& p : x)
+      p[0] *= length;
+    auto walls = test::open_box<2>(0.0, 1.0);
+    walls.hi[0] = length;
+    for (auto& axis : walls.kind)
+      axis = {WallKind::free_slip, WallKind::free_slip};
+    std::vector<std::vector<PairTally>> runs;
+    for (const int threads : {1, 2, 3}) {
+      omp_set_num_threads(threads);
+      runs.push_back(sweep_tally<2>(particles<2>(x, 0.02), &walls));
     }
+    for (std::size_t r = 1; r < runs.size(); ++r)
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        ASSERT_EQ(runs[r][i].weighted, runs[0][i].weighted)
+            << "length " << length << ", threads run " << r << ", particle " << i;
+        ASSERT_EQ(runs[r][i].count, runs[0][i].count);
+      }
+  }
 }
 
 // sweep_least hands then(b, e) blocks that cover the real particles once each, after their

@@ -229,7 +229,9 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   largest value over the window: a deviation kept within a bound) or "line_at" (the
 #   least-squares line over the window, at the reference's x = at, at = 0.0: with reference =
 #   "self", a crest's place at `at` from its track after a collision against its track before,
-#   the phase shift),
+#   the phase shift) or "period" (the mean period of the probe's oscillation about its mean
+#   over the window: the span between its first and last upward crossings of that mean over
+#   the periods between them; with reference = "theory:standing_wave"),
 #   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point),
 #   reference = "theory:kdv": columns t (s), amplitude (m: the amplitude KdV gives the speed
 #   measured over the window, W (6.16): A = 2 H (V / sqrt(g H) - 1), V the slope of crest_x) and
@@ -239,6 +241,10 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   reference = "theory:free_fall": columns t (s) and centre_y (m): the centre of mass of
 #   water whose last fluid block falls freely while the others rest, from its first reading,
 #   y(0) - f g t^2 / 2 with f the last block's share of the mass (until the block lands),
+#   reference = "theory:standing_wave": columns t (s) and period (s): linear theory's first
+#   sloshing mode of the tank between the x walls (the domain's length L), T_1 = 2 pi /
+#   sqrt(g k tanh(k H)), k = pi / L, H the water's volume as laid out / L (2D; statistic =
+#   "period", of probe centre_x for example),
 #   reference = "self": the same statistic of the same probe over reference_from..reference_to
 #   (s; reference_x and reference_y are then not used): a speed or height that must not change
 #   between the passes of a periodic tank; reference_from = 0.0, reference_to = 0.0

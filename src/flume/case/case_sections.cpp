@@ -245,10 +245,10 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       const std::string ref = r.str(key + ".reference");
       if (ref.starts_with("theory:")) {
         // A reference solution computed by flume (validation/theory_reference.hpp).
-        cc.theory =
-            r.one_of(key + ".reference", {"theory:elliptical_drop", "theory:bore", "theory:kdv",
-                                          "theory:still_water", "theory:free_fall"})
-                .substr(7);
+        cc.theory = r.one_of(key + ".reference",
+                             {"theory:elliptical_drop", "theory:bore", "theory:kdv",
+                              "theory:still_water", "theory:free_fall", "theory:standing_wave"})
+                        .substr(7);
         if (cc.theory == "kdv" && !s.waves)
           r.fail(key + ".reference", "= \"theory:kdv\" needs probes.waves = true (crest_x)");
         if (cc.theory == "free_fall" && !s.centre_of_mass)
@@ -272,11 +272,12 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       cc.quick_mean_tolerance = r.non_negative(key + ".quick_mean_tolerance");
       cc.gated = r.boolean(key + ".gated");
       const std::string stat =
-          r.one_of(key + ".statistic", {"pointwise", "mean", "slope", "max", "line_at"});
+          r.one_of(key + ".statistic", {"pointwise", "mean", "slope", "max", "line_at", "period"});
       cc.statistic = stat == "mean"      ? CurveStatistic::mean
                      : stat == "slope"   ? CurveStatistic::slope
                      : stat == "max"     ? CurveStatistic::max
                      : stat == "line_at" ? CurveStatistic::line_at
+                     : stat == "period"  ? CurveStatistic::period
                                          : CurveStatistic::pointwise;
       cc.at = r.num(key + ".at");
       if (!std::isfinite(cc.at)) r.fail(key + ".at", "must be finite");
@@ -289,6 +290,9 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       if ((cc.theory == "self" || cc.theory == "kdv") && cc.statistic == CurveStatistic::pointwise)
         r.fail(key + ".statistic",
                fmt::format("= \"pointwise\": reference \"{}\" compares a mean or a slope", ref));
+      if (cc.theory == "standing_wave" && cc.statistic != CurveStatistic::period)
+        r.fail(key + ".statistic",
+               "must be \"period\" with reference \"theory:standing_wave\" (it gives a period)");
       if (cc.theory == "self" && !(cc.reference_to > cc.reference_from))
         r.fail(key + ".reference_to",
                "must exceed reference_from: the window whose statistic is the reference");

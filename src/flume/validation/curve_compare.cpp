@@ -68,6 +68,21 @@ double line_at(const std::vector<double>& x, const std::vector<double>& y, doubl
 
 }  // namespace
 
+double mean_period(const std::vector<double>& x, const std::vector<double>& y) {
+  if (x.size() < 2) return std::nan("");
+  const double m = mean_of(y);
+  double first = 0.0, last = 0.0;
+  long crossings = 0;
+  for (std::size_t k = 1; k < x.size(); ++k)
+    if (y[k - 1] - m < 0.0 && y[k] - m >= 0.0) {
+      const double at = x[k - 1] + (m - y[k - 1]) / (y[k] - y[k - 1]) * (x[k] - x[k - 1]);
+      if (crossings == 0) first = at;
+      last = at;
+      ++crossings;
+    }
+  return crossings < 2 ? std::nan("") : (last - first) / static_cast<double>(crossings - 1);
+}
+
 double window_statistic(const std::vector<double>& t, const std::vector<double>& y,
                         CurveStatistic statistic, double from, double to, double at) {
   std::vector<double> xs, ys;
@@ -79,6 +94,7 @@ double window_statistic(const std::vector<double>& t, const std::vector<double>&
   if (xs.size() < 2 || statistic == CurveStatistic::pointwise) return std::nan("");
   if (statistic == CurveStatistic::max) return *std::max_element(ys.begin(), ys.end());
   if (statistic == CurveStatistic::line_at) return line_at(xs, ys, at);
+  if (statistic == CurveStatistic::period) return mean_period(xs, ys);
   return statistic == CurveStatistic::mean ? mean_of(ys) : slope_of(xs, ys);
 }
 
@@ -105,7 +121,17 @@ std::vector<CurvePoint> compare_over_window(
   }
   CurvePoint out;
   out.x = xs.back();
-  if (statistic == CurveStatistic::mean) {
+  if (statistic == CurveStatistic::period) {
+    std::vector<double> ts, ys;
+    for (std::size_t k = 0; k < t.size() && k < y.size(); ++k)
+      if (t[k] / time_scale >= from && t[k] / time_scale <= to) {
+        ts.push_back(t[k] / time_scale);
+        ys.push_back(y[k] / value_scale);
+      }
+    out.value = mean_period(ts, ys);
+    out.reference = mean_of(rv);
+    if (!std::isfinite(out.value)) return {};  // fewer than two crossings: no period measured
+  } else if (statistic == CurveStatistic::mean) {
     out.value = mean_of(fv);
     out.reference = mean_of(rv);
   } else if (statistic == CurveStatistic::max) {

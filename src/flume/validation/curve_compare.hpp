@@ -29,25 +29,34 @@ enum class CurveStatistic {
   slope,      // their least-squares slope against x (a speed from a position)
   max,        // the largest of them (a deviation that must stay within a bound)
   line_at,    // their least-squares line's value at a given x (a crest's place extrapolated)
+  period,     // the mean period of the probe's oscillation about its mean over the window
 };
 
 // Compares the statistic of flume's values (interpolated at the reference points inside the
 // window and the simulated time) with the same statistic of the reference. pointwise gives one
 // point per reference point; the others give one point at the window's last reference point
-// (empty if fewer than two points fall inside). `at` is line_at's x.
+// (empty if fewer than two points fall inside). `at` is line_at's x. period takes flume's own
+// samples inside the window (every one, not only those at the reference points: a crossing is
+// placed between two samples), in the reference's x, against the reference's mean.
 std::vector<CurvePoint> compare_over_window(
     const std::vector<double>& t, const std::vector<double>& y, const std::vector<double>& ref_x,
     const std::vector<double>& ref_y, double time_scale, double value_scale, bool absolute,
     CurveStatistic statistic, double from, double to, double at = 0.0);
 
-// "mean", "slope", "max", "line_at" or "pointwise".
+// "mean", "slope", "max", "line_at", "period" or "pointwise".
 inline const char* statistic_name(CurveStatistic s) {
   return s == CurveStatistic::mean      ? "mean"
          : s == CurveStatistic::slope   ? "slope"
          : s == CurveStatistic::max     ? "max"
          : s == CurveStatistic::line_at ? "line_at"
+         : s == CurveStatistic::period  ? "period"
                                         : "pointwise";
 }
+
+// The mean period of the samples (x, y) about their mean: the span from the first to the last
+// upward crossing of the mean (each placed by linear interpolation between the samples around
+// it) over the number of periods between them. NaN with fewer than two crossings.
+double mean_period(const std::vector<double>& x, const std::vector<double>& y);
 
 // The statistic of the samples (t, y) with t in [from, to] (line_at: the least-squares line's
 // value at t = at); NaN when fewer than two fall inside (pointwise is not a statistic: NaN).

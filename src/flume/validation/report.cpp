@@ -88,7 +88,13 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
     md += fmt::format("Variant `{}`: max error {}, mean {} (reported, not gated).\n", s.label,
                       amount(sum.max, abs), amount(sum.mean, abs));
   }
-  if (check.statistic != CurveStatistic::pointwise)
+  if (check.statistic == CurveStatistic::period)
+    md += fmt::format(
+        "Compared: the mean period of every output of the run with {} from {:.3g} to the row's "
+        "{} (the mean interval between the upward crossings of its mean) against the "
+        "reference's.\n",
+        check.reference_x, check.window_from, check.reference_x);
+  else if (check.statistic != CurveStatistic::pointwise)
     md += fmt::format(
         "Compared: the {} of the values at the reference's points with {} from {:.3g} to the "
         "row's {}.\n",

@@ -9,6 +9,7 @@
 #include "flume/theory/bore.hpp"
 #include "flume/theory/elliptical_drop.hpp"
 #include "flume/theory/solitary_wave.hpp"
+#include "flume/theory/standing_wave.hpp"
 #include "flume/validation/curve_compare.hpp"
 
 namespace flume {
@@ -105,32 +106,53 @@ io::CsvData kdv_reference(const CaseSpec& spec, const CurveCheck& check,
   return out;
 }
 
+// The mass of the case's fluid particles as they are laid out (per unit width in 2D), or with
+// `volume` their volume, sum m / rho (a lattice spacing's square or cube each).
+double fluid_mass(const CaseSpec& s, bool volume = false) {
+  double m = 0.0;
+  auto sum = [&](const auto& ps) {
+    for (std::size_t i = 0; i < ps.n_real; ++i)
+      m += volume ? ps.m[i] / ps.rho[i] : ps.m[i];
+  };
+  if (s.dimension == 3)
+    sum(build_particles<3>(s, build_physics<3>(s)));
+  else
+    sum(build_particles<2>(s, build_physics<2>(s)));
+  return m;
+}
+
 // The water's centre of mass while its last fluid block falls freely and the rest is at rest:
 // y(t) = y(0) - f g t^2 / 2, f the block's share of the mass, from the particles as the case
 // lays them out (a lattice disc holds a little more or less water than the circle), from the
 // run's first reading, at the run's output times.
 io::CsvData free_fall_reference(const CaseSpec& spec, const io::CsvData& probes) {
-  const auto mass_of = [](const CaseSpec& s) {
-    double m = 0.0;
-    if (s.dimension == 3) {
-      const auto ps = build_particles<3>(s, build_physics<3>(s));
-      for (std::size_t i = 0; i < ps.n_real; ++i)
-        m += ps.m[i];
-    } else {
-      const auto ps = build_particles<2>(s, build_physics<2>(s));
-      for (std::size_t i = 0; i < ps.n_real; ++i)
-        m += ps.m[i];
-    }
-    return m;
-  };
   CaseSpec last = spec;
   last.blocks = {spec.blocks.back()};
-  const double f = mass_of(last) / mass_of(spec), g = gravity_magnitude(spec);
+  const double f = fluid_mass(last) / fluid_mass(spec), g = gravity_magnitude(spec);
   const auto t = probes.column("time"), y = probes.column("centre_y");
   io::CsvData out;
   out.columns = {"t", "centre_y"};
   for (std::size_t k = 0; k < t.size(); ++k)
     out.rows.push_back({t[k], y.front() - 0.5 * f * g * t[k] * t[k]});
+  return out;
+}
+
+// The first sloshing mode of a closed 2D tank (theory/standing_wave.hpp): T_1 for the tank's
+// length L (between the x walls: the domain) and the still depth H of the water as laid out,
+// its volume / L: a case that starts with a mound (W (6.21)) sloshes about a level above the
+// block's top. At the run's output times in the window.
+io::CsvData standing_wave_reference(const CaseSpec& spec, const CurveCheck& check,
+                                    const io::CsvData& probes) {
+  if (spec.dimension != 2)
+    throw InputError(fmt::format("{}: validation.curves: theory:standing_wave: needs a 2D tank",
+                                 spec.file.string()));
+  const double length = spec.domain_max[0] - spec.domain_min[0];
+  const double depth = fluid_mass(spec, true) / length;
+  const double period = standing_wave_period(1, length, depth, gravity_magnitude(spec));
+  io::CsvData out;
+  out.columns = {"t", "period"};
+  for (double tw : window_times(check, probes))
+    out.rows.push_back({tw, period});
   return out;
 }
 
@@ -166,6 +188,7 @@ io::CsvData curve_reference(const CaseSpec& spec, const CurveCheck& check,
   if (check.theory == "kdv") return kdv_reference(spec, check, probes);
   if (check.theory == "self") return self_reference(check, probes);
   if (check.theory == "free_fall") return free_fall_reference(spec, probes);
+  if (check.theory == "standing_wave") return standing_wave_reference(spec, check, probes);
   throw InputError(
       fmt::format("{}: unknown reference theory:{}", spec.file.string(), check.theory));
 }
