@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "flume/core/error.hpp"
 #include "flume/theory/standing_wave.hpp"
 #include "flume/validation/curve_compare.hpp"
 #include "flume/validation/theory_reference.hpp"
@@ -104,6 +105,10 @@ TEST(StandingWave, ReferenceTakesTheDepthOfTheWaterAsLaidOut) {
   const double k = kPi, expected = 2.0 * kPi / std::sqrt(9.81 * k * std::tanh(k * 0.16));
   for (double p : period)
     EXPECT_NEAR(p, expected, 1e-9 * expected);
+  // Not a closed tank (periodic ends): refused, in one line naming the file and the reference.
+  auto periodic = spec;
+  periodic.walls[0] = periodic.walls[1] = "periodic";
+  EXPECT_THROW(curve_reference(periodic, spec.curves.front(), probes), InputError);
   // The reference gives a period: it takes the period statistic and no other.
   EXPECT_NE(test::error_of(slosh_toml("mean")).find("must be \"period\""), std::string::npos)
       << test::error_of(slosh_toml("mean"));

@@ -143,9 +143,15 @@ io::CsvData free_fall_reference(const CaseSpec& spec, const io::CsvData& probes)
 // block's top. At the run's output times in the window.
 io::CsvData standing_wave_reference(const CaseSpec& spec, const CurveCheck& check,
                                     const io::CsvData& probes) {
-  if (spec.dimension != 2)
-    throw InputError(fmt::format("{}: validation.curves: theory:standing_wave: needs a 2D tank",
-                                 spec.file.string()));
+  const auto fail = [&](const std::string& what) {
+    throw InputError(
+        fmt::format("{}: validation.curves: theory:standing_wave: {}", spec.file.string(), what));
+  };
+  if (spec.dimension != 2) fail("needs a 2D tank");
+  const auto mirror = [](const std::string& w) { return w == "free_slip" || w == "no_slip"; };
+  if (!mirror(spec.walls[0]) || !mirror(spec.walls[1]) || !spec.moving_walls.empty() ||
+      !spec.repulsive_walls.empty())
+    fail("needs a closed tank: fixed ghost walls at x_min and x_max, no other walls");
   const double length = spec.domain_max[0] - spec.domain_min[0];
   const double depth = fluid_mass(spec, true) / length;
   const double period = standing_wave_period(1, length, depth, gravity_magnitude(spec));
