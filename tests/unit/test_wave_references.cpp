@@ -73,6 +73,9 @@ window_to = 7.0
   const auto x = ref.column("crest_x"), t = ref.column("t");
   const double a_mean = 0.02 - 1e-3 / 41.0;
   EXPECT_NEAR((x.back() - x.front()) / (t.back() - t.front()), kdv_speed(a_mean, 0.15, 9.81), 1e-9);
+  // KdV's width W (6.17) of the mean measured amplitude, sqrt(4 H^3 / (3 A)), by hand.
+  for (double w : ref.column("width"))
+    EXPECT_NEAR(w, std::sqrt(4.0 * 0.15 * 0.15 * 0.15 / (3.0 * a_mean)), 1e-12);
   // compared as validate does: the measured mean amplitude against a_kdv
   const auto points =
       compare_over_window(probes.column("time"), probes.column("crest_amplitude"), t,

@@ -120,6 +120,11 @@ gauges = []            # m along x: wave gauges gauge_1, gauge_2, ... (m, the de
                        # still_depth); needs waves = true
 second_crest = 0.0     # m: also crest2_x, crest2_amplitude, the highest other crest at least
                        # this far from the highest (two waves in one tank); 0 = off
+crest_profile = false  # crest_width (m: the least-squares lambda of A sech^2((x - crest_x) /
+                       # lambda) against the surface within 3 KdV widths of the crest) and
+                       # crest_shape (the RMS deviation there from KdV's profile of amplitude
+                       # crest_amplitude, W (6.15), over it; probes/crest_profile.hpp); needs
+                       # waves = true
 still_depth = 0.0      # m, H of the tank; 0 = the first fluid block's top above domain.min
 still_water = false    # bed_pressure (Pa: the four bottom rows' p + rho0 g y, middle 80 % of
                        # the width) and water_level (m: twice the particles' mean height)
@@ -234,8 +239,10 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   the periods between them; with reference = "theory:standing_wave"),
 #   window_from = 0.0, window_to = 0.0 (the window in the reference's x; 0 = its last point),
 #   reference = "theory:kdv": columns t (s), amplitude (m: the amplitude KdV gives the speed
-#   measured over the window, W (6.16): A = 2 H (V / sqrt(g H) - 1), V the slope of crest_x) and
-#   speed (m/s: KdV's speed of the amplitude measured, the mean of crest_amplitude),
+#   measured over the window, W (6.16): A = 2 H (V / sqrt(g H) - 1), V the slope of crest_x),
+#   crest_x (m: a line whose slope is KdV's speed of the amplitude measured, the mean of
+#   crest_amplitude), width (m: KdV's width sqrt(4 H^3 / (3 A)) of that mean amplitude, W (6.17),
+#   for crest_width) and zero (for crest_shape),
 #   reference = "theory:still_water": columns t (s), bed_pressure (Pa, rho0 g H), water_level
 #   (m, H) and zero, for the first fluid block's depth H,
 #   reference = "theory:free_fall": columns t (s) and centre_y (m): the centre of mass of

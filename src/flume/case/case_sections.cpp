@@ -23,7 +23,7 @@ std::vector<std::string> probe_names(const CaseSpec& s) {
       "bed_pressure", "water_level",      "density_deviation", "centre_x",
       "centre_y",     "centre_z",         "overturn",          "broken_at",
       "crest2_x",     "crest2_amplitude", "broken_x",          "incident_amplitude",
-      "grilli_s0",    "grilli_breaks"};
+      "grilli_s0",    "grilli_breaks",    "crest_width",       "crest_shape"};
   for (std::size_t g = 0; g < s.gauges.size(); ++g)
     names.push_back(fmt::format("gauge_{}", g + 1));
   return names;
@@ -54,6 +54,8 @@ void read_probes(const Reader& r, CaseSpec& s) {
       r.fail("probes.gauges", fmt::format("{} m: outside the domain along x", xg));
   s.second_crest = r.non_negative("probes.second_crest");
   if (s.second_crest > 0.0 && !s.waves) r.fail("probes.second_crest", "needs probes.waves = true");
+  s.crest_profile = r.boolean("probes.crest_profile");
+  if (s.crest_profile && !s.waves) r.fail("probes.crest_profile", "needs probes.waves = true");
   s.still_depth = r.non_negative("probes.still_depth");
   if (s.still_depth == 0.0) {
     const auto& b = s.blocks.front();
@@ -226,18 +228,20 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       const std::string key = fmt::format("validation.curves[{}]", c);
       CurveCheck cc;
       cc.probe = r.one_of(key + ".probe", probe_names(s));
-      const bool enabled = cc.probe == "surge_front"         ? s.surge_front
-                           : cc.probe == "column_height"     ? s.column_height
-                           : cc.probe.starts_with("bore")    ? s.bore
-                           : cc.probe.starts_with("semi")    ? s.semi_axes
-                           : cc.probe.starts_with("crest")   ? s.waves
-                           : cc.probe.starts_with("gauge")   ? s.waves
-                           : cc.probe.starts_with("density") ? s.density_deviation
-                           : cc.probe.starts_with("centre")  ? s.centre_of_mass
-                           : cc.probe == "overturn" || cc.probe.starts_with("broken") ? s.breaking
-                           : cc.probe == "incident_amplitude" || cc.probe.starts_with("grilli")
-                               ? s.beach_slope > 0.0
-                               : s.still_water;
+      const bool enabled =
+          cc.probe == "surge_front"                                  ? s.surge_front
+          : cc.probe == "column_height"                              ? s.column_height
+          : cc.probe.starts_with("bore")                             ? s.bore
+          : cc.probe.starts_with("semi")                             ? s.semi_axes
+          : cc.probe == "crest_width" || cc.probe == "crest_shape"   ? s.crest_profile
+          : cc.probe.starts_with("crest2")                           ? s.second_crest > 0.0
+          : cc.probe.starts_with("crest")                            ? s.waves
+          : cc.probe.starts_with("gauge")                            ? s.waves
+          : cc.probe.starts_with("density")                          ? s.density_deviation
+          : cc.probe.starts_with("centre")                           ? s.centre_of_mass
+          : cc.probe == "overturn" || cc.probe.starts_with("broken") ? s.breaking
+          : cc.probe == "incident_amplitude" || cc.probe.starts_with("grilli") ? s.beach_slope > 0.0
+                                                                               : s.still_water;
       if (!enabled)
         r.fail(key + ".probe",
                fmt::format("= \"{}\": the case's [probes] do not measure it", cc.probe));

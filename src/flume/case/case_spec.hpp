@@ -177,6 +177,7 @@ struct CaseSpec {
   bool waves = false;          // crest_x, crest_amplitude, gauge_1... (probes/wave_probes.hpp, 2D)
   std::vector<double> gauges;  // m along x: wave gauges
   double second_crest = 0.0;   // m: crest2_x, crest2_amplitude at least this far away; 0 = off
+  bool crest_profile = false;  // crest_width, crest_shape (probes/crest_profile.hpp)
   double still_depth = 0.0;    // m, H: resolved (the first fluid block's height unless given)
   bool still_water = false;    // bed_pressure, water_level
   bool density_deviation = false;   // density_deviation: max |rho - rho0| / rho0

@@ -4,6 +4,7 @@
 
 #include "flume/probes/bore.hpp"
 #include "flume/probes/column_height.hpp"
+#include "flume/probes/crest_profile.hpp"
 #include "flume/probes/fluid_body.hpp"
 #include "flume/probes/surge_front.hpp"
 #include "flume/probes/water_depth.hpp"
@@ -41,6 +42,7 @@ std::vector<std::string> CaseProbes<D>::columns() const {
   if (spec_.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
   if (spec_.waves) {
     cols.insert(cols.end(), {"crest_x", "crest_amplitude"});
+    if (spec_.crest_profile) cols.insert(cols.end(), {"crest_width", "crest_shape"});
     if (spec_.second_crest > 0.0) cols.insert(cols.end(), {"crest2_x", "crest2_amplitude"});
     for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
       cols.push_back("gauge_" + std::to_string(g + 1));
@@ -100,6 +102,10 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
                         spec_.spacing, periodic, bed_.empty() ? nullptr : &bed_);
       const auto w = (*waves_)(depth);
       row.insert(row.end(), {w.crest_x, w.crest_amplitude});
+      if (spec_.crest_profile) {
+        const auto c = crest_profile(depth, spec_.still_depth, w.crest_x, w.crest_amplitude);
+        row.insert(row.end(), {c.width, c.shape});
+      }
       if (spec_.second_crest > 0.0) row.insert(row.end(), {w.crest2_x, w.crest2_amplitude});
       row.insert(row.end(), w.gauges.begin(), w.gauges.end());
       if (shoaling_) {

@@ -87,8 +87,9 @@ io::CsvData still_water_reference(const CaseSpec& spec, const io::CsvData& probe
 }
 
 // KdV W (6.16) for the run's own crest: the amplitude its measured speed implies (constant),
-// and the crest track at the speed its measured amplitude implies (a line through the window's
-// first point, so that its slope is that speed).
+// the crest track at the speed its measured amplitude implies (a line through the window's
+// first point, so that its slope is that speed), the width W (6.17) of its measured amplitude
+// (for crest_width) and zero (for crest_shape, an absolute deviation).
 io::CsvData kdv_reference(const CaseSpec& spec, const CurveCheck& check,
                           const io::CsvData& probes) {
   const double g = gravity_magnitude(spec), h = spec.still_depth;
@@ -99,10 +100,11 @@ io::CsvData kdv_reference(const CaseSpec& spec, const CurveCheck& check,
   const double amplitude = window_statistic(t, probes.column("crest_amplitude"),
                                             CurveStatistic::mean, check.window_from, to);
   io::CsvData out;
-  out.columns = {"t", "amplitude", "crest_x"};
+  out.columns = {"t", "amplitude", "crest_x", "width", "zero"};
   const double v = kdv_speed(amplitude, h, g);
+  const double width = amplitude > 0.0 ? kdv_width(amplitude, h) : 0.0;
   for (double tw : window_times(check, probes))
-    out.rows.push_back({tw, kdv_amplitude(speed, h, g), v * tw});
+    out.rows.push_back({tw, kdv_amplitude(speed, h, g), v * tw, width, 0.0});
   return out;
 }
 
