@@ -1,0 +1,38 @@
+// Every bundled case file reads as flume validate reads it: as written, with its quick
+// overrides, and with each variant's overrides on top of either (a variant whose key or value is
+// wrong would otherwise surface only when the full validation reaches it, an hour in).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "flume/case/case_reader.hpp"
+#include "flume/validation/bundled_cases.hpp"
+#include "flume/validation/variant.hpp"
+
+namespace flume {
+namespace {
+
+TEST(BundledCases, EveryCaseQuickSetAndVariantReads) {
+  const auto files = bundled_case_files();
+  ASSERT_GE(files.size(), 20u);  // the cases/ folder was found
+  for (const auto& file : files) {
+    SCOPED_TRACE(file.string());
+    CaseSpec spec;
+    ASSERT_NO_THROW(spec = read_case(file, {}));
+    ASSERT_NO_THROW(read_case(file, spec.quick));
+    std::set<std::string> labels{spec.preset};
+    for (const auto& text : spec.variants) {
+      const Variant v = parse_variant(text);
+      EXPECT_TRUE(labels.insert(v.label).second) << "variant label repeated: " << v.label;
+      EXPECT_NO_THROW(read_case(file, v.overrides)) << text;
+      auto quick = spec.quick;
+      quick.insert(quick.end(), v.overrides.begin(), v.overrides.end());
+      EXPECT_NO_THROW(read_case(file, quick)) << text;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace flume
