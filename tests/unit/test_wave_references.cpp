@@ -211,5 +211,30 @@ TEST(WaveReferences, PlotsTakeDiagnosticsOrProbeColumns) {
       {"validation.diagnostics_plots", "gauge_1"});
 }
 
+TEST(WaveReferences, CrestCurvesNeedTheProbesThatMeasureThem) {
+  // crest_width and crest_shape are measured with probes.crest_profile only, crest2_* with
+  // probes.second_crest only: a curve of either without it is one line naming the curve; and
+  // crest_profile needs the wave probe.
+  const std::string width = R"(
+[[validation.curves]]
+probe = "crest_width"
+reference = "theory:kdv"
+reference_x = "t"
+reference_y = "width"
+statistic = "mean"
+)";
+  test::expect_one_line_with(test::error_of(tank_toml(width)),
+                             {"validation.curves[0].probe", "crest_width", "do not measure it"});
+  EXPECT_TRUE(test::spec_from(tank_toml("crest_profile = true\n" + width)).crest_profile);
+  std::string second = width;
+  second.replace(second.find("crest_width"), 11, "crest2_amplitude");
+  test::expect_one_line_with(test::error_of(tank_toml(second)),
+                             {"crest2_amplitude", "do not measure it"});
+  std::string no_waves = tank_toml("crest_profile = true\n");
+  no_waves.replace(no_waves.find("waves = true"), 12, "waves = false");
+  test::expect_one_line_with(test::error_of(no_waves),
+                             {"probes.crest_profile", "needs probes.waves"});
+}
+
 }  // namespace
 }  // namespace flume
