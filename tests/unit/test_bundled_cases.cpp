@@ -1,5 +1,6 @@
 // Every bundled case file reads as flume validate reads it: as written, with its quick
-// overrides, and with each variant's overrides on top of either (a variant whose key or value is
+// overrides, with each variant's overrides on top of either, and with each companion's on top
+// of every configuration (a variant whose key or value is
 // wrong would otherwise surface only when the full validation reaches it, an hour in).
 #include <gtest/gtest.h>
 
@@ -30,6 +31,18 @@ TEST(BundledCases, EveryCaseQuickSetAndVariantReads) {
       auto quick = spec.quick;
       quick.insert(quick.end(), v.overrides.begin(), v.overrides.end());
       EXPECT_NO_THROW(read_case(file, quick)) << text;
+    }
+    // Each companion on top of the case, its quick set and every variant (validate runs each
+    // configuration's companions).
+    for (const auto& text : spec.companions) {
+      const Variant c = parse_variant(text);
+      std::vector<std::vector<std::string>> configs{{}, spec.quick};
+      for (const auto& v : spec.variants)
+        configs.push_back(parse_variant(v).overrides);
+      for (auto sets : configs) {
+        sets.insert(sets.end(), c.overrides.begin(), c.overrides.end());
+        EXPECT_NO_THROW(read_case(file, sets)) << text;
+      }
     }
   }
 }

@@ -161,6 +161,9 @@ notes = []             # the papers' own numbers, quoted in the report
 variants = []          # "KEY=VALUE": other configurations run and reported beside the case
 quick_variants = true  # whether validate --quick runs the variants too (false: the case alone,
                        # for a case whose runs are long)
+companions = []        # "LABEL: KEY=VALUE; ...": companion runs of every configuration run (the
+                       # configuration's overrides, then these), whose probes are the references
+                       # of curves with reference = "run:LABEL" (a wave alone in the same tank)
 pictures = []          # s: particle pictures (PNG) of every configuration near these times (later than end_time: left out)
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
 diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted against time for every
@@ -255,6 +258,9 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   reference = "self": the same statistic of the same probe over reference_from..reference_to
 #   (s; reference_x and reference_y are then not used): a speed or height that must not change
 #   between the passes of a periodic tank; reference_from = 0.0, reference_to = 0.0
+#   reference = "run:LABEL": the same statistic over the same window of column reference_probe
+#   (= "": the probe itself) of companion run LABEL (validation.companions), sampled at the
+#   companion's own times: a wave's height after a collision against the same wave's alone
 # [[validation.profiles]]: a field of profile.csv compared at the end time with an exact
 #   solution: field = "rho" (or "p", "u"), reference = "theory:riemann" (the exact Riemann
 #   solution of an ideal gas between the first two fluid blocks, the diaphragm at the first
@@ -316,7 +322,7 @@ const std::string& curve_defaults() {
       "source = \"\"\nvalue_scale = 1.0\nerror = \"relative\"\ntolerance = 0.1\n"
       "quick_tolerance = 0.1\nmean_tolerance = 0.0\nquick_mean_tolerance = 0.0\ngated = true\n"
       "statistic = \"pointwise\"\nwindow_from = 0.0\nwindow_to = 0.0\n"
-      "reference_from = 0.0\nreference_to = 0.0\nat = 0.0\n";
+      "reference_from = 0.0\nreference_to = 0.0\nat = 0.0\nreference_probe = \"\"\n";
   return d;
 }
 

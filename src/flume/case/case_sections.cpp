@@ -223,6 +223,22 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       if (o.find('=') == std::string::npos)
         r.fail("validation.variants", fmt::format("\"{}\": \"{}\" is not KEY=VALUE", v, o));
   }
+  s.companions = r.strings("validation.companions");
+  std::vector<std::string> companion_labels;
+  for (const auto& c : s.companions) {
+    const Variant companion = parse_variant(c);
+    if (companion.overrides.empty() || c.find(':') == std::string::npos ||
+        c.find(':') > c.find('='))
+      r.fail("validation.companions",
+             fmt::format("\"{}\": each entry is LABEL: KEY=VALUE; KEY=VALUE ...", c));
+    for (const auto& o : companion.overrides)
+      if (o.find('=') == std::string::npos)
+        r.fail("validation.companions", fmt::format("\"{}\": \"{}\" is not KEY=VALUE", c, o));
+    if (std::find(companion_labels.begin(), companion_labels.end(), companion.label) !=
+        companion_labels.end())
+      r.fail("validation.companions", fmt::format("label \"{}\" given twice", companion.label));
+    companion_labels.push_back(companion.label);
+  }
   if (const auto* curves = t.at_path("validation.curves").as_array()) {
     for (std::size_t c = 0; c < curves->size(); ++c) {
       const std::string key = fmt::format("validation.curves[{}]", c);
@@ -260,13 +276,29 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
                  "= \"theory:free_fall\" needs probes.centre_of_mass = true (centre_y)");
       } else if (ref == "self") {
         cc.theory = "self";  // validate builds the table: columns t and value
+      } else if (ref.starts_with("run:")) {
+        cc.theory = "run";  // validate builds the table from the companion: columns t and value
+        cc.companion = ref.substr(4);
+        if (std::find(companion_labels.begin(), companion_labels.end(), cc.companion) ==
+            companion_labels.end())
+          r.fail(key + ".reference",
+                 fmt::format("= \"{}\": no validation.companions entry is labelled \"{}\"", ref,
+                             cc.companion));
+        cc.reference_probe = r.str(key + ".reference_probe");
+        if (cc.reference_probe.empty()) cc.reference_probe = cc.probe;
+        const auto names = probe_names(s);
+        if (std::find(names.begin(), names.end(), cc.reference_probe) == names.end())
+          r.fail(
+              key + ".reference_probe",
+              fmt::format("= \"{}\": not a column of the case's probes.csv", cc.reference_probe));
       } else {
         cc.reference = file.parent_path() / ref;
         if (!std::filesystem::exists(cc.reference))
           r.fail(key + ".reference", fmt::format("file {} not found", cc.reference.string()));
       }
-      cc.reference_x = cc.theory == "self" ? "t" : r.str(key + ".reference_x");
-      cc.reference_y = cc.theory == "self" ? "value" : r.str(key + ".reference_y");
+      const bool computed_table = cc.theory == "self" || cc.theory == "run";
+      cc.reference_x = computed_table ? "t" : r.str(key + ".reference_x");
+      cc.reference_y = computed_table ? "value" : r.str(key + ".reference_y");
       cc.source = r.str(key + ".source");
       cc.value_scale = r.positive(key + ".value_scale");
       cc.absolute = r.one_of(key + ".error", {"relative", "absolute"}) == "absolute";

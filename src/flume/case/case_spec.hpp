@@ -92,6 +92,11 @@ struct CurveCheck {
   double reference_from = 0.0;
   double reference_to = 0.0;
   double at = 0.0;  // line_at's x (s): e.g. when two waves met, for the phase shift
+  // reference = "run:LABEL" (theory "run"): the same statistic, over the same window, of
+  // column reference_probe of the companion run LABEL (validation.companions): a wave's height
+  // after a collision against the same wave's, alone in the same tank, at the same times.
+  std::string companion;
+  std::string reference_probe;  // the companion's probes.csv column; "" = probe
 };
 
 // A profile field compared with a reference solution at the end time (validate): the relative
@@ -204,8 +209,11 @@ struct CaseSpec {
   std::vector<std::string> notes;     // the papers' numbers, set beside flume's in the report
   std::vector<std::string> variants;  // KEY=VALUE: other configurations run and reported beside
   bool quick_variants = true;         // whether validate --quick runs the variants too
-  std::vector<double> pictures;       // s: particle pictures of every configuration at these times
-  std::string picture_field;          // the snapshot field that colours them
+  // [LABEL:] KEY=VALUE; ...: companion runs, each configuration's own case with these overrides
+  // on top, whose probes are references of curves ("run:LABEL"; validation/validate.cpp).
+  std::vector<std::string> companions;
+  std::vector<double> pictures;  // s: particle pictures of every configuration at these times
+  std::string picture_field;     // the snapshot field that colours them
   std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run
   std::vector<CurveCheck> curves;
   std::vector<ProfileCheck> profiles;

@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flume/case/case_spec.hpp"
@@ -27,6 +28,9 @@ struct SeriesResult {
   // A liquid's density over the run, from diagnostics.csv (has_density_range false for a gas).
   bool has_density_range = false;
   DensityRange density;
+  // The companion runs of this configuration (CaseSpec::companions, in order): the references
+  // of the curves with reference = "run:LABEL".
+  std::vector<std::pair<std::string, RunResult>> companions;
 };
 
 // One run of a convergence study (CaseSpec::convergence_spacings): the case as written at one

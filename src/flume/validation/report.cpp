@@ -78,7 +78,10 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
       "\n### {}\n\nReference: {} (`{}`). Error {}. The case as written (`{}`): {} points, max "
       "error {}, mean {}, {}.\n",
       check.label, check.source,
-      check.theory.empty() ? check.reference.filename().string() : "theory:" + check.theory,
+      check.theory.empty()     ? check.reference.filename().string()
+      : check.theory == "run"  ? "run:" + check.companion
+      : check.theory == "self" ? std::string("self")
+                               : "theory:" + check.theory,
       abs ? "absolute, in the reference's units" : "relative", main.label, main.curves[c].size(),
       amount(main_sum.max, abs), amount(main_sum.mean, abs), verdict);
   for (std::size_t v = 1; v < cr.series.size(); ++v) {
@@ -107,6 +110,11 @@ std::string curve_section(const CaseResult& cr, std::size_t c) {
     md += fmt::format(
         "The reference is the same statistic of the same run over t = {:.4g}-{:.4g} s.\n",
         check.reference_from, check.reference_to);
+  if (check.theory == "run")
+    md += fmt::format(
+        "The reference is the same statistic of `{}` over the same window in each "
+        "configuration's companion run `{}`.\n",
+        check.reference_probe, check.companion);
   md += fmt::format("\n| {} | reference {} |", check.reference_x, check.reference_y);
   std::string rule = "\n|---|---|";
   for (const auto& s : cr.series) {
@@ -202,6 +210,10 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
                       cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
     for (const auto& s : cr.series)
       md += run_line(s.label, s.run, cr.spec.spacing, variant_note(s));
+    for (const auto& s : cr.series)
+      for (const auto& [companion, run] : s.companions)
+        md += run_line(s.label + "/" + companion, run, cr.spec.spacing,
+                       " (companion: the reference of the curves with run:" + companion + ")");
     if (cr.coarse_spacing > 0.0)
       for (const auto& s : cr.series)
         md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");

@@ -185,10 +185,24 @@ io::CsvData self_reference(const CurveCheck& check, const io::CsvData& probes) {
   return out;
 }
 
+// The companion run's column reference_probe at its own output times (its whole run: the
+// comparison takes the check's window). No companion (its run did not complete): no rows, so
+// the check has no points.
+io::CsvData companion_reference(const CurveCheck& check, const io::CsvData* companion) {
+  io::CsvData out;
+  out.columns = {"t", "value"};
+  if (companion == nullptr) return out;
+  const auto t = companion->column("time"), y = companion->column(check.reference_probe);
+  for (std::size_t k = 0; k < t.size(); ++k)
+    out.rows.push_back({t[k], y[k]});
+  return out;
+}
+
 }  // namespace
 
 io::CsvData curve_reference(const CaseSpec& spec, const CurveCheck& check,
-                            const io::CsvData& probes) {
+                            const io::CsvData& probes, const io::CsvData* companion) {
+  if (check.theory == "run") return companion_reference(check, companion);
   if (check.theory.empty()) return io::read_csv(check.reference);
   if (check.theory == "elliptical_drop") return elliptical_drop_reference(spec);
   if (check.theory == "bore") return bore_reference(spec);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "flume/case/case_reader.hpp"
@@ -194,10 +195,21 @@ std::vector<double> profile_errors(const CaseSpec& spec, const std::filesystem::
   return errors;
 }
 
+// The probes of a configuration's companion runs, by label (those that completed).
+using CompanionProbes = std::map<std::string, io::CsvData>;
+
+// The probes of companion `label` (nullptr when it did not run to the end).
+const io::CsvData* companion_probes(const CompanionProbes& companions, const std::string& label) {
+  const auto it = companions.find(label);
+  return it == companions.end() ? nullptr : &it->second;
+}
+
 // The points of curve `check` of a run whose probes are `probes`.
 std::vector<CurvePoint> compare_curve(const CaseSpec& spec, const CurveCheck& check,
-                                      const io::CsvData& probes) {
-  const auto ref = curve_reference(spec, check, probes);
+                                      const io::CsvData& probes,
+                                      const CompanionProbes& companions = {}) {
+  const auto ref =
+      curve_reference(spec, check, probes, companion_probes(companions, check.companion));
   const double to = check.window_to > 0.0 ? check.window_to : HUGE_VAL;
   return compare_over_window(probes.column("time"), probes.column(check.probe),
                              ref.column(check.reference_x), ref.column(check.reference_y),
@@ -263,6 +275,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   const auto coarse =
       cr.spec.profiles.empty() ? std::vector<std::string>{} : coarser_overrides(cr.spec);
   std::vector<io::CsvData> probes;
+  std::vector<CompanionProbes> companions;  // per configuration
   for (const auto& [label, overrides] : configs) {
     const CaseSpec spec = read_case(file, overrides);
     const auto run_dir = opt.out_dir / name / label;
@@ -275,9 +288,24 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
     // A case without curves (a shock tube) has no probes.csv.
     const bool curves = s.run.completed && !spec.curves.empty();
     probes.push_back(curves ? io::read_csv(run_dir / "probes.csv") : io::CsvData{});
+    // The configuration's companions (its overrides, then the companion's), once it completed.
+    companions.emplace_back();
+    for (const auto& c : s.run.completed ? spec.companions : std::vector<std::string>{}) {
+      const Variant companion = parse_variant(c);
+      auto sets = overrides;
+      sets.insert(sets.end(), companion.overrides.begin(), companion.overrides.end());
+      const auto dir = opt.out_dir / name / "companions" / label / companion.label;
+      if (!opt.quiet)
+        std::cout << fmt::format("validate {}: {}, companion {} -> {}", name, label,
+                                 companion.label, dir.string())
+                  << std::endl;
+      RunResult r = run_case(read_case(file, sets), RunOptions{dir, opt.threads, true});
+      if (r.completed) companions.back().emplace(companion.label, io::read_csv(dir / "probes.csv"));
+      s.companions.emplace_back(companion.label, std::move(r));
+    }
     if (curves)
       for (const auto& check : spec.curves)
-        s.curves.push_back(compare_curve(spec, check, probes.back()));
+        s.curves.push_back(compare_curve(spec, check, probes.back(), companions.back()));
     if (s.run.completed) s.profile_errors = profile_errors(spec, run_dir);
     if (s.run.completed && spec.eos == "tait") {
       s.has_density_range = true;
@@ -302,11 +330,16 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   draw_pictures(opt.out_dir, cr);
   plot_diagnostics(opt.out_dir, cr);
   if (!cr.spec.profiles.empty() && cr.series.front().run.completed) plot_profiles(opt.out_dir, cr);
-  for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
-    cr.plots.push_back(cr.series.front().run.completed
-                           ? plot_curve(opt.out_dir, cr, c, probes,
-                                        curve_reference(cr.spec, cr.spec.curves[c], probes.front()))
-                           : std::string());
+  for (const auto& check : cr.spec.curves) {
+    const std::size_t c = cr.plots.size();
+    if (!cr.series.front().run.completed) {
+      cr.plots.emplace_back();
+      continue;
+    }
+    const auto ref = curve_reference(cr.spec, check, probes.front(),
+                                     companion_probes(companions.front(), check.companion));
+    cr.plots.push_back(plot_curve(opt.out_dir, cr, c, probes, ref));
+  }
   return cr;
 }
 
