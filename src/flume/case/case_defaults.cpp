@@ -166,6 +166,9 @@ companions = []        # "LABEL: KEY=VALUE; ...": companion runs of every config
                        # of curves with reference = "run:LABEL" (a wave alone in the same tank)
 pictures = []          # s: particle pictures (PNG) of every configuration near these times (later than end_time: left out)
 picture_field = "velocity_x"  # what colours them: a snapshot field, NAME_x/_y/_z a component
+crest_pictures = []    # s: the surface near the highest crest of every configuration against KdV's
+                       # A sech^2((x - x_c) / lambda) of its height, the snapshot nearest each time
+                       # (2D, probes.waves; later than end_time: left out)
 diagnostics_plots = []  # diagnostics.csv (or probes.csv) columns plotted against time for every
                         # configuration
 convergence_spacings = []  # m, coarse to fine: a convergence study, the case as written run at

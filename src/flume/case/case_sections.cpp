@@ -193,6 +193,13 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
     if (!(when >= 0.0)) r.fail("validation.pictures", fmt::format("{} s: must be >= 0", when));
     if (when <= s.end_time) s.pictures.push_back(when);
   }
+  for (double when : r.numbers("validation.crest_pictures")) {
+    if (!(when >= 0.0))
+      r.fail("validation.crest_pictures", fmt::format("{} s: must be >= 0", when));
+    if (!s.waves || s.dimension != 2)
+      r.fail("validation.crest_pictures", "needs a 2D wave tank with probes.waves = true");
+    if (when <= s.end_time) s.crest_pictures.push_back(when);
+  }
   // A field that snapshots hold (run/runner.cpp's snapshot_cloud), or a velocity component;
   // bl41_deviation only comes with a corrected scheme, and a variant may be one.
   {

@@ -213,7 +213,10 @@ struct CaseSpec {
   // on top, whose probes are references of curves ("run:LABEL"; validation/validate.cpp).
   std::vector<std::string> companions;
   std::vector<double> pictures;  // s: particle pictures of every configuration at these times
-  std::string picture_field;     // the snapshot field that colours them
+  // s: the surface near the highest crest against KdV's A sech^2 of its height, every
+  // configuration in one plot (scripts/plot_crest_profile.py; 2D wave tanks)
+  std::vector<double> crest_pictures;
+  std::string picture_field;                   // the snapshot field that colours them
   std::vector<std::string> diagnostics_plots;  // diagnostics.csv columns plotted for every run
   std::vector<CurveCheck> curves;
   std::vector<ProfileCheck> profiles;

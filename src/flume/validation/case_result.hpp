@@ -50,6 +50,7 @@ struct CaseResult {
   std::vector<std::string> overrides;   // --set KEY=VALUE given to validate, in every run
   // pictures[k][s]: PNG of series s near spec.pictures[k] ("" if it could not be drawn)
   std::vector<std::vector<std::string>> pictures;
+  std::vector<std::string> crest_pictures;     // per spec.crest_pictures entry: PNG or ""
   std::vector<std::string> diagnostics_plots;  // per spec.diagnostics_plots entry: PNG or ""
   std::vector<double> profile_tolerances;      // per profile check (quick or full)
   std::vector<std::string> profile_plots;      // per profile check: PNG or ""

@@ -166,6 +166,22 @@ std::string pictures_section(const CaseResult& cr) {
   return md;
 }
 
+// The crest profiles against KdV's sech^2 (validate's draw_crest_profiles).
+std::string crest_pictures_section(const CaseResult& cr) {
+  if (cr.crest_pictures.empty()) return "";
+  std::string md =
+      "\n### The surface near the crest against KdV's A sech^2((x - x_c) / lambda)\n\n"
+      "The depth of water from the particles' masses (as the wave probes read it), against x - x_c "
+      "about the highest crest, for every scheme at the snapshot nearest each time; dashed: KdV's "
+      "wave of the height measured, lambda = sqrt(4 H^3 / (3 A)) (W (6.17)).\n\n";
+  for (std::size_t k = 0; k < cr.crest_pictures.size(); ++k)
+    md +=
+        cr.crest_pictures[k].empty()
+            ? fmt::format("- t = {:.4g} s: (unavailable)\n", cr.spec.crest_pictures[k])
+            : fmt::format("![t = {:.4g} s]({})\n", cr.spec.crest_pictures[k], cr.crest_pictures[k]);
+  return md;
+}
+
 }  // namespace
 
 // The relative L1 errors of every series against the exact solution, one row per field, and
@@ -234,7 +250,7 @@ std::string report_markdown(const std::vector<CaseResult>& results, bool quick) 
     for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
       md += curve_section(cr, c);
     md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) + study_section(cr) +
-          diagnostics_section(cr) + pictures_section(cr);
+          diagnostics_section(cr) + pictures_section(cr) + crest_pictures_section(cr);
   }
   return md;
 }

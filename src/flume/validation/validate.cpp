@@ -111,6 +111,32 @@ void draw_pictures(const std::filesystem::path& out_dir, CaseResult& cr) {
   }
 }
 
+// The surface near the highest crest of every completed series at each of the case's
+// crest_pictures times, against KdV's A sech^2 of its height (scripts/plot_crest_profile.py).
+void draw_crest_profiles(const std::filesystem::path& out_dir, CaseResult& cr) {
+  const auto script = std::filesystem::path(FLUME_SOURCE_DIR) / "scripts" / "plot_crest_profile.py";
+  const auto& spec = cr.spec;
+  for (double t : spec.crest_pictures) {
+    std::string args;
+    for (const auto& s : cr.series) {
+      const auto pvd = out_dir / spec.name / s.label / "snapshots" / "snapshots.pvd";
+      if (s.run.completed && std::filesystem::exists(pvd))
+        args += " --series " + shell_quote(s.label + "=" + pvd.string());
+    }
+    const std::string png = fmt::format("{}_crest_t{:.4g}.png", spec.name, t);
+    const std::string cmd = fmt::format(
+        "{} {}{} --time {} --depth {} --rho0 {} --dx {} --x-lo {} --x-hi {}{} --out {} --title {} "
+        "> /dev/null 2>&1",
+        python(), shell_quote(script.string()), args, t, spec.still_depth, spec.rho0, spec.spacing,
+        spec.domain_min[0], spec.domain_max[0], spec.walls[0] == "periodic" ? " --periodic" : "",
+        shell_quote((out_dir / png).string()),
+        shell_quote(
+            fmt::format("{}: the surface near the crest against KdV, t = {:.4g} s", spec.name, t)));
+    cr.crest_pictures.push_back(!args.empty() && std::system(cmd.c_str()) == 0 ? png
+                                                                               : std::string());
+  }
+}
+
 // Each of the case's diagnostics columns against time, one line per completed series (BL Fig 6
 // sets the schemes' momenta side by side); a column that diagnostics.csv does not have is
 // taken from probes.csv (a wave gauge's time series).
@@ -328,6 +354,7 @@ CaseResult validate_case(const std::string& name, const ValidateOptions& opt) {
   }
   cr.study = run_study(file, name, cr.spec, opt);
   draw_pictures(opt.out_dir, cr);
+  draw_crest_profiles(opt.out_dir, cr);
   plot_diagnostics(opt.out_dir, cr);
   if (!cr.spec.profiles.empty() && cr.series.front().run.completed) plot_profiles(opt.out_dir, cr);
   for (const auto& check : cr.spec.curves) {
