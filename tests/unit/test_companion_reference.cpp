@@ -166,17 +166,15 @@ statistic = "mean"
 TEST(CrestPictures, TimesWithinTheRunAndAWaveTank) {
   // Times after the end are left out (a shortened run draws what it has); a tank without the
   // wave probes has no crest to draw.
-  const auto spec =
-      test::spec_from(tank_toml("[validation]\ncrest_pictures = [2.0, 7.5, 9.0]\n"));
+  const auto spec = test::spec_from(tank_toml("[validation]\ncrest_pictures = [2.0, 7.5, 9.0]\n"));
   EXPECT_EQ(spec.crest_pictures, (std::vector<double>{2.0, 7.5}));
   auto no_waves = tank_toml("[validation]\ncrest_pictures = [2.0]\n");
   no_waves.replace(no_waves.find("waves = true"), 12, "waves = false");
   no_waves.replace(no_waves.find("second_crest = 1.0"), 18, "");
   test::expect_one_line_with(test::error_of(no_waves),
                              {"validation.crest_pictures", "probes.waves"});
-  test::expect_one_line_with(
-      test::error_of(tank_toml("[validation]\ncrest_pictures = [-1.0]\n")),
-      {"validation.crest_pictures", ">= 0"});
+  test::expect_one_line_with(test::error_of(tank_toml("[validation]\ncrest_pictures = [-1.0]\n")),
+                             {"validation.crest_pictures", ">= 0"});
 }
 
 }  // namespace
