@@ -115,7 +115,9 @@ detach_gap = 3.0       # spacings: particles farther than this from the main bod
                        # spray, counted by neither probe
 waves = false          # 2D wave tank (probes/wave_probes.hpp): crest_x (m, where the depth
                        # of water, from the particles' masses, is highest; unwrapped in a
-                       # periodic tank), crest_amplitude (m, that depth minus still_depth)
+                       # periodic tank), crest_amplitude (m, that depth minus still_depth),
+                       # crest_centre_x (m, the centroid of the crest's upper half: steadier
+                       # than crest_x where the top is flat)
 gauges = []            # m along x: wave gauges gauge_1, gauge_2, ... (m, the depth there minus
                        # still_depth); needs waves = true
 second_crest = 0.0     # m: also crest2_x, crest2_amplitude, the highest other crest at least

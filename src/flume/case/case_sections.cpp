@@ -18,12 +18,13 @@ namespace {
 // separately, with a message naming the probe).
 std::vector<std::string> probe_names(const CaseSpec& s) {
   std::vector<std::string> names{
-      "surge_front",  "column_height",    "semi_axis_x",       "semi_axis_y",
-      "bore_front",   "bore_height",      "crest_x",           "crest_amplitude",
-      "bed_pressure", "water_level",      "density_deviation", "centre_x",
-      "centre_y",     "centre_z",         "overturn",          "broken_at",
-      "crest2_x",     "crest2_amplitude", "broken_x",          "incident_amplitude",
-      "grilli_s0",    "grilli_breaks",    "crest_width",       "crest_shape"};
+      "surge_front",   "column_height",    "semi_axis_x",       "semi_axis_y",
+      "bore_front",    "bore_height",      "crest_x",           "crest_amplitude",
+      "bed_pressure",  "water_level",      "density_deviation", "centre_x",
+      "centre_y",      "centre_z",         "overturn",          "broken_at",
+      "crest2_x",      "crest2_amplitude", "broken_x",          "incident_amplitude",
+      "grilli_s0",     "grilli_breaks",    "crest_width",       "crest_shape",
+      "crest_centre_x"};
   for (std::size_t g = 0; g < s.gauges.size(); ++g)
     names.push_back(fmt::format("gauge_{}", g + 1));
   return names;

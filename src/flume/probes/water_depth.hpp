@@ -155,6 +155,36 @@ inline Crest highest_crest(const DepthProfile& d) {
   return detail::refine(d, top);
 }
 
+// The centre of the crest c: the centroid of the profile's excess over half the crest's height
+// above `base` (the still depth), eta - (base + (c.height - base) / 2), over the run of samples
+// around the crest that exceed that level (the samples stand at unwrapped positions, so the
+// centre may lie beyond the tank's end in a periodic one). On a symmetric hump it is the crest
+// itself; where the crest is flat and noisy (a wave whose top is a few particles wide) the
+// highest sample hops between them while the centroid of the upper half moves smoothly, so a
+// speed read from it is steadier. c.x when there is no crest above base.
+inline double crest_centre(const DepthProfile& d, const Crest& c, double base) {
+  const auto n = static_cast<long>(d.eta.size());
+  const double level = base + 0.5 * (c.height - base);
+  if (n == 0 || !(c.height > base)) return c.x;
+  const long top = std::clamp(static_cast<long>(std::floor((c.x - d.x_lo) / d.dx)), 0L, n - 1);
+  double sum_w = 0.0, sum_wx = 0.0;
+  auto add = [&](long k) {
+    if (!d.periodic && (k < 0 || k >= n)) return false;  // a wall ends the crest
+    const double w = detail::sample(d, k) - level;
+    if (!(w > 0.0)) return false;
+    sum_w += w;
+    sum_wx += w * (d.x_lo + (static_cast<double>(k) + 0.5) * d.dx);
+    return true;
+  };
+  // At most half the tank's length each way: a periodic tank's samples wrap around.
+  if (!add(top)) return c.x;
+  for (long k = top + 1; k < top + n / 2 && add(k);)
+    ++k;
+  for (long k = top - 1; k > top - n / 2 && add(k);)
+    --k;
+  return sum_wx / sum_w;
+}
+
 // The highest local maximum (a sample at least as high as both neighbours) at least `away`
 // from x_avoid (the distance around the tank in a periodic one): a second wave beside the
 // highest crest. NaNs when there is none.

@@ -4,7 +4,8 @@
 //   depth H, A = eta_max - H (W Fig 6.9). In a periodic tank the crest's position is unwrapped:
 //   each reading is taken as the image x + m L nearest the previous one, so a wave that has
 //   gone round the tank n times reads n L further on and its speed is the slope of crest_x
-//   (the tracker's last position is its state, kept in a checkpoint);
+//   (the tracker's last position is its state, kept in a checkpoint); and the crest's centre,
+//   the centroid of its upper half (crest_centre), a steadier position where the top is flat;
 // - wave gauges: the surface elevation eta(x_g) - H at fixed places, as a resistance gauge reads
 //   it (the mean of its column).
 // Speeds are taken from crest_x by validation's least-squares slope over a window (W reads them
@@ -24,7 +25,8 @@ namespace flume {
 struct WaveReading {
   double crest_x = 0.0;          // m along the tank, unwrapped in a periodic tank
   double crest_amplitude = 0.0;  // m above the still depth
-  double crest2_x = 0.0;         // the second crest (when asked for), m
+  double crest_centre_x = 0.0;  // m: the centre of the crest's upper half (crest_centre), unwrapped
+  double crest2_x = 0.0;        // the second crest (when asked for), m
   double crest2_amplitude = 0.0;
   std::vector<double> gauges;  // m above the still depth, one per gauge
 };
@@ -41,6 +43,8 @@ class WaveProbe {
     const Crest c = highest_crest(d);
     r.crest_x = unwrapped(d, c.x, last_);
     r.crest_amplitude = c.height - still_;
+    // Within a wave's width of the crest: unwrapped as the crest is.
+    r.crest_centre_x = r.crest_x + (crest_centre(d, c, still_) - c.x);
     if (separation_ > 0.0) {
       const Crest c2 = highest_crest_away_from(d, c.x, separation_);
       r.crest2_x = std::isfinite(c2.x) ? unwrapped(d, c2.x, last2_) : c2.x;

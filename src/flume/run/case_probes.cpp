@@ -41,7 +41,7 @@ std::vector<std::string> CaseProbes<D>::columns() const {
   if (spec_.column_height) cols.push_back("column_height");
   if (spec_.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
   if (spec_.waves) {
-    cols.insert(cols.end(), {"crest_x", "crest_amplitude"});
+    cols.insert(cols.end(), {"crest_x", "crest_amplitude", "crest_centre_x"});
     if (spec_.crest_profile) cols.insert(cols.end(), {"crest_width", "crest_shape"});
     if (spec_.second_crest > 0.0) cols.insert(cols.end(), {"crest2_x", "crest2_amplitude"});
     for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
@@ -101,7 +101,7 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
           depth_profile(ps, nullptr, spec_.domain_min[0], spec_.domain_max[0], spec_.rho0,
                         spec_.spacing, periodic, bed_.empty() ? nullptr : &bed_);
       const auto w = (*waves_)(depth);
-      row.insert(row.end(), {w.crest_x, w.crest_amplitude});
+      row.insert(row.end(), {w.crest_x, w.crest_amplitude, w.crest_centre_x});
       if (spec_.crest_profile) {
         const auto c = crest_profile(depth, spec_.still_depth, w.crest_x, w.crest_amplitude);
         row.insert(row.end(), {c.width, c.shape});
