@@ -53,6 +53,33 @@ TEST(SolitaryWaveTheory, TheMoundsWaveHoldsTheMoundsWater) {
   EXPECT_NEAR(kdv_elevation(A, H, lambda) / A, 1.0 / (std::cosh(1.0) * std::cosh(1.0)), 1e-15);
 }
 
+TEST(SolitaryWaveTheory, WaterVelocityCarriesThePermanentWave) {
+  // kdv_velocity against what a wave of permanent form needs, each computed here from the
+  // elevation alone: the flux seen from the crest, (u - V)(H + eta) = -V H, to round-off, and
+  // the kinematic surface condition w = (u - V) d eta / dx at z = H + eta, with d eta / dx by a
+  // central difference of step 1e-5 lambda (error ~ (step / lambda)^2 eta''' lambda^2, about
+  // 1e-10 of the slope's scale V A / lambda: tolerance 1e-8 of it).
+  const double A = 0.03, H = 0.15, g = 9.81;
+  const double V = std::sqrt(g * H) * (1.0 + A / (2.0 * H)), lambda = kdv_width(A, H);
+  for (const double s : {-2.0 * lambda, -0.3 * lambda, 0.0, 0.5 * lambda, 1.7 * lambda}) {
+    const double eta = kdv_elevation(A, H, s);
+    const KdvVelocity top = kdv_velocity(A, H, g, s, H + eta);
+    EXPECT_NEAR((top.u - V) * (H + eta), -V * H, 1e-14 * V * H) << s;
+    const double d = 1e-5 * lambda;
+    const double slope = (kdv_elevation(A, H, s + d) - kdv_elevation(A, H, s - d)) / (2.0 * d);
+    EXPECT_NEAR(top.w, (top.u - V) * slope, 1e-8 * V * A / lambda) << s;
+    // The horizontal velocity is the same at every height; w grows linearly from the bed.
+    const KdvVelocity bed = kdv_velocity(A, H, g, s, 0.0);
+    const KdvVelocity mid = kdv_velocity(A, H, g, s, 0.5 * (H + eta));
+    EXPECT_EQ(bed.u, top.u);
+    EXPECT_EQ(bed.w, 0.0);
+    EXPECT_NEAR(mid.w, 0.5 * top.w, 1e-15 * V);
+  }
+  // At the crest: u = V A / (H + A) forward, w = 0; ahead of it the water rises (w > 0).
+  EXPECT_NEAR(kdv_velocity(A, H, g, 0.0, H).u, V * A / (H + A), 1e-15);
+  EXPECT_GT(kdv_velocity(A, H, g, 0.5 * lambda, H).w, 0.0);
+}
+
 TEST(SolitaryWaveTheory, GrilliBreakerTypes) {
   // W (6.19)-(6.20), Table 6.2. A / H = 0.2: breaks on 1:15 (16.9 / 225 = 0.075 < 0.2) and not
   // on 1:8 (0.264 > 0.2). S0 on 1:15 = 1.521 / 15 / sqrt(0.2) = 0.227: plunging. On 1:35 with

@@ -13,6 +13,7 @@
 #include "flume/core/error.hpp"
 #include "flume/kernels/kernel.hpp"
 #include "flume/schemes/registry.hpp"
+#include "flume/theory/solitary_wave.hpp"
 
 namespace flume {
 
@@ -61,6 +62,9 @@ namespace {
 template <int D>
 double surface_top(const FluidBlock& block, const Vec<D>& x) {
   const double top = block.max[D - 1];
+  if (block.solitary_amplitude > 0.0)
+    return top + kdv_elevation(block.solitary_amplitude, top - block.min[D - 1],
+                               x[0] - block.solitary_centre);
   if (!(block.surface_amplitude > 0.0)) return top;
   const double d = block.surface_from == 0 ? x[0] - block.min[0] : block.max[0] - x[0];
   return top + block.surface_amplitude * std::exp(-block.surface_decay * d);
@@ -185,9 +189,12 @@ std::vector<Vec<D>> block_positions(const FluidBlock& block, double dx) {
   long total = 1;
   for (int k = 0; k < D; ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    // A mound rises above the box's top: the lattice reaches its crest (inside() cuts it).
-    const double extra = k == D - 1 ? block.surface_amplitude : 0.0;
-    count[kk] = static_cast<long>(std::floor((block.max[kk] + extra - block.min[kk]) / dx + 1e-6));
+    count[kk] = static_cast<long>(std::floor((block.max[kk] - block.min[kk]) / dx + 1e-6));
+    // A mound or a solitary wave rises above the box's top: the lattice goes on by whole rows
+    // past its crest, and inside() cuts it. (The rows had been counted from the crest's height
+    // with the floor of the box: at 0.025 m that cut the top 2 cm off W (6.21)'s mound.)
+    const double extra = k == D - 1 ? block.surface_amplitude + block.solitary_amplitude : 0.0;
+    if (extra > 0.0) count[kk] += static_cast<long>(std::ceil(extra / dx));
     total *= count[kk];
   }
   for (long n = 0; n < total; ++n) {
@@ -276,6 +283,13 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
       for (int r = 0; r < D; ++r)
         for (int c = 0; c < D; ++c)
           v[r] += block.velocity_gradient[static_cast<std::size_t>(r * D + c)] * (x[c] - centre[c]);
+      if (block.solitary_amplitude > 0.0) {  // the water under the wave, W (6.15)-(6.16)
+        const double bed = block.min[D - 1];
+        const KdvVelocity u = kdv_velocity(block.solitary_amplitude, block.max[D - 1] - bed, g,
+                                           x[0] - block.solitary_centre, x[D - 1] - bed);
+        v[0] += u.u;
+        v[D - 1] += u.w;
+      }
       const double rho =
           block.density > 0.0 ? block.density
           : block.hydrostatic

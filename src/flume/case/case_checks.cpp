@@ -286,6 +286,28 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
       if (fb.max[dim - 1] + fb.surface_amplitude > s.domain_max[dim - 1])
         r.fail(key + ".surface_amplitude", "puts the mound above the domain's top");
     }
+    fb.solitary_amplitude = r.non_negative(key + ".solitary_amplitude");
+    fb.solitary_centre = r.num(key + ".solitary_centre");
+    if (fb.solitary_amplitude > 0.0) {
+      const std::string what = key + ".solitary_amplitude";
+      const double depth = fb.max[dim - 1] - fb.min[dim - 1];
+      if (dim != 2 || fb.shape != "box" || fb.layout != "lattice")
+        r.fail(what, "(a KdV solitary wave, W (6.15)) is for a 2D box on the lattice");
+      else if (fb.surface_amplitude > 0.0)
+        r.fail(what, "and surface_amplitude (W (6.21)'s mound) cannot shape the same surface");
+      else if (!(fb.solitary_amplitude < 0.78 * depth))
+        r.fail(what, fmt::format("= {} m: must be below 0.78 H = {} m (W (6.18): a higher "
+                                 "solitary wave breaks; H = max - min of the block)",
+                                 fb.solitary_amplitude, 0.78 * depth));
+      else if (fb.max[dim - 1] + fb.solitary_amplitude > s.domain_max[dim - 1])
+        r.fail(what, "puts the crest above the domain's top");
+      else if (!(gravity_magnitude(s) > 0.0))
+        r.fail(what, "needs gravity (the wave's speed is sqrt(g H)(1 + A / (2 H)), W (6.16))");
+      if (!(fb.solitary_centre >= fb.min[0] && fb.solitary_centre <= fb.max[0]))
+        r.fail(key + ".solitary_centre",
+               fmt::format("= {} m: must lie within the block along x, [{}, {}]",
+                           fb.solitary_centre, fb.min[0], fb.max[0]));
+    }
     fb.initial_pressure = r.one_of(key + ".initial_pressure", {"none", "velocity_field"});
     if (fb.initial_pressure == "velocity_field") {
       // case/affine_flow_pressure.hpp: an incompressible liquid ellipsoid in a straining flow

@@ -34,6 +34,26 @@ inline double kdv_elevation(double amplitude, double depth, double s) {
   return amplitude / (c * c);
 }
 
+// The water under W (6.15)'s wave travelling toward +x, at distance s from the crest and height
+// z above the bed, in the shallow-water form that keeps the KdV profile unchanged: a horizontal
+// velocity uniform over the depth whose flux carries the wave, u (H + eta) = V eta (seen from
+// the crest moving at V the flux (u - V)(H + eta) is -V H everywhere), and the vertical velocity
+// that continuity then requires, w = -z du/dx (zero at the bed). At the surface this is the
+// kinematic condition of a permanent wave, w = (u - V) d eta / dx. m/s
+struct KdvVelocity {
+  double u = 0.0;
+  double w = 0.0;
+};
+inline KdvVelocity kdv_velocity(double amplitude, double depth, double g, double s, double z) {
+  const double v = kdv_speed(amplitude, depth, g);
+  const double lambda = kdv_width(amplitude, depth);
+  const double eta = kdv_elevation(amplitude, depth, s);
+  const double deta_dx = -2.0 * eta * std::tanh(s / lambda) / lambda;
+  const double column = depth + eta;
+  const double du_dx = v * depth / (column * column) * deta_dx;
+  return {v * eta / column, -z * du_dx};
+}
+
 // W (6.23): all the water above H in W (6.21)'s mound made into one solitary wave. The mound
 // holds B / k per unit width; the wave holds the integral of A sech^2(x / lambda), 2 A lambda;
 // 2 A sqrt(4 H^3 / (3 A)) = B / k gives A = (3 / H^3) (B / (4 k))^2.
