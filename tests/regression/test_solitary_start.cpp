@@ -87,6 +87,25 @@ TEST(SolitaryStart, ParticlesFillTheKdvProfileAndMoveWithTheWave) {
   EXPECT_GT(crest_foot, far_foot);
 }
 
+TEST(SolitaryStart, TowardXMinIsTheMirrorImage) {
+  // The same particles (the profile is even about x0), every velocity negated: both components
+  // of the mirror image of the wave travelling toward x_max (checked above), so the wave
+  // travels toward x_min.
+  const auto east = test::spec_from(tank_toml(""));
+  const auto west = test::spec_from(tank_toml("solitary_towards = \"x_min\""));
+  const auto a = build_particles<2>(east, build_physics<2>(east));
+  const auto b = build_particles<2>(west, build_physics<2>(west));
+  ASSERT_EQ(a.n_real, b.n_real);
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < a.n_real; ++i) {
+    EXPECT_EQ(a.x[i], b.x[i]);
+    EXPECT_EQ(b.v[i][0], -a.v[i][0]);
+    EXPECT_EQ(b.v[i][1], -a.v[i][1]);
+    fastest = std::min(fastest, b.v[i][0]);
+  }
+  EXPECT_LT(fastest, -0.1);  // V A / (H + A) = 0.24 m/s at the crest, toward -x
+}
+
 TEST(SolitaryStart, MoundLatticeReachesItsCrest) {
   // W (6.21)'s mound y = H + B exp(-k x) (B = 0.07, k = 2.5, H = 0.15) at 0.025 m: the box's
   // 6 rows and 3 more, cut by the surface. Counted here column by column: 2 particles more than
@@ -126,6 +145,8 @@ TEST(SolitaryStart, BadWavesAreOneLineErrors) {
                        {"fluid_blocks[0].solitary_centre", "within the block"});
   expect_one_line_with(error_of(tank_toml(""), {"fluid_blocks[0].solitary_amplitude=-0.01"}),
                        {"fluid_blocks[0].solitary_amplitude"});
+  expect_one_line_with(error_of(tank_toml("solitary_towards = \"up\"")),
+                       {"fluid_blocks[0].solitary_towards", "x_max, x_min"});
   expect_one_line_with(error_of(tank_toml(""), {"domain.max=[4.0, 0.17]"}),
                        {"fluid_blocks[0].solitary_amplitude", "above the domain's top"});
 }

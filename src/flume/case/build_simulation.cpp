@@ -287,8 +287,9 @@ ParticleSet<D> build_particles(const CaseSpec& spec, const Physics<D>& phys) {
         const double bed = block.min[D - 1];
         const KdvVelocity u = kdv_velocity(block.solitary_amplitude, block.max[D - 1] - bed, g,
                                            x[0] - block.solitary_centre, x[D - 1] - bed);
-        v[0] += u.u;
-        v[D - 1] += u.w;
+        // Toward x_min: the mirror image, both components negated (eta is even about x0).
+        v[0] += block.solitary_towards * u.u;
+        v[D - 1] += block.solitary_towards * u.w;
       }
       const double rho =
           block.density > 0.0 ? block.density

@@ -288,6 +288,8 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
     }
     fb.solitary_amplitude = r.non_negative(key + ".solitary_amplitude");
     fb.solitary_centre = r.num(key + ".solitary_centre");
+    fb.solitary_towards =
+        r.one_of(key + ".solitary_towards", {"x_max", "x_min"}) == "x_min" ? -1 : 1;
     if (fb.solitary_amplitude > 0.0) {
       const std::string what = key + ".solitary_amplitude";
       const double depth = fb.max[dim - 1] - fb.min[dim - 1];

@@ -199,11 +199,12 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   (1/m, k), surface_from = "x_min" (or "x_max"): a 2D lattice box whose top is
 #   y = max_y + B exp(-k d), d the distance from that side (W (6.21): the mound that collapses
 #   into a solitary wave); with hydrostatic = true each column starts hydrostatic under its own
-#   surface. solitary_amplitude = 0.0 (m, A), solitary_centre = 0.0 (m, x0): a 2D lattice box
-#   whose top is a KdV solitary wave already formed, y = max_y + A sech^2((x - x0) / lambda),
-#   lambda = sqrt(4 H^3 / (3 A)) on the still depth H = max_y - min_y (W (6.15)-(6.17), A below
-#   0.78 H), travelling toward +x: each particle gets the depth-uniform u = V eta / (H + eta)
-#   and w = -(y - min_y) du/dx, V = sqrt(g H)(1 + A / (2 H)) (theory/solitary_wave.hpp), on top
+#   surface. solitary_amplitude = 0.0 (m, A), solitary_centre = 0.0 (m, x0), solitary_towards =
+#   "x_max" (or "x_min"): a 2D lattice box whose top is a KdV solitary wave already formed,
+#   y = max_y + A sech^2((x - x0) / lambda), lambda = sqrt(4 H^3 / (3 A)) on the still depth
+#   H = max_y - min_y (W (6.15)-(6.17), A below 0.78 H), travelling toward that side: each
+#   particle gets the depth-uniform u = V eta / (H + eta) and w = -(y - min_y) du/dx (both
+#   negated toward x_min), V = sqrt(g H)(1 + A / (2 H)) (theory/solitary_wave.hpp), on top
 #   of the block's velocity, and with hydrostatic = true each column starts hydrostatic under
 #   its own surface. Not with surface_amplitude. initial_pressure = "none" (or "velocity_field": an ellipsoid of liquid whose
 #   velocity_gradient is diagonal with zero trace starts at the pressure of that incompressible
@@ -296,6 +297,7 @@ const std::string& fluid_block_defaults(int dimension) {
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0]\nshape = \"box\"\nlayout = \"lattice\"\n"
       "count = 0\nseed = 1\nmin_distance = 0.0\nsurface_amplitude = 0.0\nsurface_decay = 0.0\n"
       "surface_from = \"x_min\"\nsolitary_amplitude = 0.0\nsolitary_centre = 0.0\n"
+      "solitary_towards = \"x_max\"\n"
       "initial_pressure = \"none\"\n";
   static const std::string d3 =
       "min = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nvelocity = [0.0, 0.0, 0.0]\n"
@@ -303,7 +305,8 @@ const std::string& fluid_block_defaults(int dimension) {
       "velocity_gradient = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\n"
       "shape = \"box\"\nlayout = \"lattice\"\ncount = 0\nseed = 1\nmin_distance = 0.0\n"
       "surface_amplitude = 0.0\nsurface_decay = 0.0\nsurface_from = \"x_min\"\n"
-      "solitary_amplitude = 0.0\nsolitary_centre = 0.0\ninitial_pressure = \"none\"\n";
+      "solitary_amplitude = 0.0\nsolitary_centre = 0.0\nsolitary_towards = \"x_max\"\n"
+      "initial_pressure = \"none\"\n";
   return dimension == 3 ? d3 : d2;
 }
 

@@ -35,10 +35,12 @@ struct FluidBlock {
   double surface_decay = 0.0;      // k, 1/m
   int surface_from = 0;            // 0: the mound at x_min; 1: at x_max
   // Or a KdV solitary wave already formed (2D, the box's top): y = max_y + A sech^2((x - x0) /
-  // lambda), W (6.15)-(6.17) on the still depth H = max_y - min_y, travelling toward +x with the
-  // water's velocity of theory/solitary_wave.hpp (kdv_velocity) added to the block's. A = 0: none.
+  // lambda), W (6.15)-(6.17) on the still depth H = max_y - min_y, travelling toward x_max (or
+  // x_min) with the water's velocity of theory/solitary_wave.hpp (kdv_velocity) added to the
+  // block's. A = 0: none.
   double solitary_amplitude = 0.0;  // A, m
   double solitary_centre = 0.0;     // x0, m
+  int solitary_towards = 1;         // +1: toward x_max; -1: toward x_min
   // "none", or "velocity_field": the incompressible pressure of the block's straining flow
   // (case/affine_flow_pressure.hpp), the density from it through the EOS.
   std::string initial_pressure = "none";
