@@ -206,10 +206,11 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   particle gets the depth-uniform u = V eta / (H + eta) and w = -(y - min_y) du/dx (both
 #   negated toward x_min), V = sqrt(g H)(1 + A / (2 H)) (theory/solitary_wave.hpp), on top
 #   of the block's velocity, and with hydrostatic = true each column starts hydrostatic under
-#   its own surface. Not with surface_amplitude. initial_pressure = "none" (or "velocity_field": an ellipsoid of liquid whose
-#   velocity_gradient is diagonal with zero trace starts at the pressure of that incompressible
-#   straining flow, zero on its surface, its density from the EOS: BL 5.2's drop without the
-#   acoustic start-up; case/affine_flow_pressure.hpp).
+#   its own surface. Not with surface_amplitude. initial_pressure = "none" (or
+#   "velocity_field": an ellipsoid of liquid whose velocity_gradient is diagonal with zero
+#   trace starts at the pressure of that incompressible straining flow, zero on its surface,
+#   its density from the EOS: BL 5.2's drop without the acoustic start-up;
+#   case/affine_flow_pressure.hpp).
 # [[moving_walls]]: a wall side that moves along its normal with a prescribed motion (the bore's
 #   push wall, BL 5.4; a piston wave-maker): side = "x_max" (any side that is a wall),
 #   velocity = 0.0 (m/s, along the axis), amplitude = 0.0 (m), period = 0.0 (s): the wall stands
