@@ -87,6 +87,11 @@ TEST(CaseReader, OutOfRangeValueIsAnError) {
   expect_one_line_with(error_of(kValid, {"scheme.preset=standard", "scheme.shepard_every=40"}),
                        {"scheme.shepard_every", "summation", "must be 0"});
   EXPECT_EQ(test::spec_from(kValid, {"scheme.shepard_every=40"}).shepard_every, 40);
+  EXPECT_EQ(test::spec_from(kValid, {}).density_filter, "shepard");  // W (6.3) unless asked
+  EXPECT_EQ(test::spec_from(kValid, {"scheme.density_filter=first_order"}).density_filter,
+            "first_order");
+  expect_one_line_with(error_of(kValid, {"scheme.density_filter=mls"}),
+                       {"scheme.density_filter", "shepard", "first_order"});
 }
 
 TEST(CaseReader, BadOverridesAndSyntax) {

@@ -71,14 +71,16 @@ void compute_rates(const Scheme<D>& scheme, ParticleSet<D>& ps,
                 });
 }
 
-// Applies the scheme's density filter (the Shepard filter W (6.3)) once to the real particles of
-// ps, the ghosts of the walls (if any) taking part as in a simulation step.
+// Applies the scheme's density filter (the Shepard filter W (6.3), or its first-order form) once
+// to the real particles of ps, the ghosts of the walls (if any) taking part as in a simulation
+// step.
 template <int D>
 void filter_density(const Scheme<D>& scheme, ParticleSet<D>& ps,
-                    const BoxWalls<D>* walls = nullptr) {
+                    const BoxWalls<D>* walls = nullptr,
+                    DensityFilter kind = DensityFilter::shepard) {
   in_cell_order(scheme.support(), ps, walls,
                 [&](ParticleSet<D>& s, const SweepContext<D>& ctx, const Halo<D>& halo) {
-                  scheme.filter_density(s, ctx, halo);
+                  scheme.filter_density(s, ctx, halo, kind);
                 });
 }
 

@@ -137,6 +137,7 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
            fmt::format("filters an evolved density; with density \"{}\" (recomputed every "
                        "step) it must be 0",
                        s.density));
+  s.density_filter = r.one_of("scheme.density_filter", {"shepard", "first_order"});
 
   s.rho0 = r.positive("fluid.density");
   s.mu = r.non_negative("fluid.viscosity");

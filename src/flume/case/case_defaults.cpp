@@ -61,8 +61,11 @@ xsph = 0.0             # XSPH eps, W (6.6), 0 <= eps <= 1 (0.5 usual); 0 = off
 cfl = 0.3              # Courant number C_FL of BL (63), or W (3.90)'s factor
 alpha = 0.0            # artificial viscosity alpha, W (3.18); 0 = off
 beta = 0.0             # artificial viscosity beta, W (3.18)
-shepard_every = 0      # steps between Shepard density filters W (6.3) (W: 40); 0 = off;
+shepard_every = 0      # steps between density filters W (6.3) (W: 40); 0 = off;
                        # continuity density only
+density_filter = "shepard"  # the filter's average: shepard (W (6.3)) | first_order (W (6.3)
+                       # with BL (47)-(52)'s corrected kernel: keeps a linear density, so a
+                       # hydrostatic column's surface, as it is)
 
 [fluid]
 density = 1000.0       # reference density rho0, kg/m^3

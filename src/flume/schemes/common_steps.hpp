@@ -9,6 +9,7 @@
 
 #include "flume/boundaries/halo.hpp"
 #include "flume/equations/acceleration_sum.hpp"
+#include "flume/equations/density_summation_first_order_bl47.hpp"
 #include "flume/equations/shepard_filter_w63.hpp"
 #include "flume/equations/subgrid_stress_w531.hpp"
 #include "flume/equations/velocity_gradient_bl22.hpp"
@@ -55,6 +56,19 @@ void shepard_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D
   ShepardFilterW63<D> filter{ps, filtered};
   sweep<D, Kernel>(ctx, ps, "shepard_filter", filter);
   std::copy(filtered.begin(), filtered.end(), ps.rho.begin());
+  halo.update_scalar(ps, ps.rho);
+}
+
+// Sweep: rho_a <- the density interpolated with BL (47)-(52)'s first-order corrected kernel,
+// rho_a = sum_b m_b W~_b(x_a), the filter W (6.3) with W~ in place of the Shepard kernel BL (53)
+// that W (6.3) is. Where W (6.3) reads a hydrostatic column's free-surface particles high (their
+// kernels hold only denser water below), this reproduces the column's linear density, so
+// filtering does not push a pressure onto the surface. The equation writes ps.rho in its
+// finish: the volumes it reads were all taken before the pairs (own.hpp).
+template <int D, class Kernel>
+void first_order_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo) {
+  DensitySummationFirstOrderBL47<D> filter{ps};
+  sweep<D, Kernel>(ctx, ps, "first_order_filter", filter);
   halo.update_scalar(ps, ps.rho);
 }
 

@@ -14,6 +14,11 @@
 
 namespace flume {
 
+// Which average the density filter takes (Scheme::filter_density): W (6.3)'s Shepard average,
+// or the same interpolation with BL (47)-(52)'s first-order corrected kernel, which also keeps a
+// linear density (a hydrostatic column) at a free surface.
+enum class DensityFilter { shepard, first_order };
+
 template <int D>
 class Scheme {
  public:
@@ -39,11 +44,12 @@ class Scheme {
   // (leapfrog.hpp says why), a Runge-Kutta stage's v. The ghosts' u is refreshed here.
   virtual void compute_state_rates(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
                                    const Halo<D>& /*halo*/, std::vector<Vec<D>>& /*u*/) const {}
-  // For schemes that evolve density: the Shepard density filter W (6.3) over the real
-  // particles, ghosts appended and refreshed. (A summation density is recomputed every step,
-  // so the case reader does not allow the filter with it.)
+  // For schemes that evolve density: the density filter over the real particles (W (6.3)'s
+  // Shepard average, or its first-order form), ghosts appended and refreshed. (A summation
+  // density is recomputed every step, so the case reader does not allow the filter with it.)
   virtual void filter_density(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
-                              const Halo<D>& /*halo*/) const {}
+                              const Halo<D>& /*halo*/,
+                              DensityFilter /*filter*/ = DensityFilter::shepard) const {}
   // XSPH W (6.6): ps.xsph, the drift correction of the velocity field u (ghosts refreshed here;
   // common_steps.hpp, xsph_correction).
   virtual void xsph(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,

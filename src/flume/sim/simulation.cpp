@@ -187,7 +187,7 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   const SweepContext<D> ctx{grid_, work_, uniform_h_, &clock_};
 
   if (config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
-    scheme_->filter_density(ps_, ctx, halo_);
+    scheme_->filter_density(ps_, ctx, halo_, config_.density_filter);
   prepare_step_rule(range);
 
   // The CFL step of the new accelerations comes out of the force sweep (time_step.hpp).
@@ -235,7 +235,7 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   const auto rates = [&](double* stable) {
     const SweepContext<D> ctx{grid_, work_, uniform_h_, &clock_};
     if (stable && config_.shepard_every > 0 && steps_ > 0 && steps_ % config_.shepard_every == 0)
-      scheme_->filter_density(ps_, ctx, halo_);
+      scheme_->filter_density(ps_, ctx, halo_, config_.density_filter);
     if (stable) prepare_step_rule(range);
     const double dt_stable = accelerations(ctx);
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v);

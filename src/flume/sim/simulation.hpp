@@ -28,9 +28,11 @@ enum class Integrator { leap_frog, runge_kutta, modified_runge_kutta };
 template <int D>
 struct SimulationConfig {
   Integrator integrator = Integrator::leap_frog;
-  double cfl = 0.3;                     // Courant number of BL (63)
-  double fixed_dt = 0.0;                // s; 0 means the CFL rule
-  int shepard_every = 0;                // steps between Shepard density filters W (6.3); 0 = never
+  double cfl = 0.3;       // Courant number of BL (63)
+  double fixed_dt = 0.0;  // s; 0 means the CFL rule
+  int shepard_every = 0;  // steps between density filters W (6.3); 0 = never
+  // The filter's average: W (6.3)'s Shepard kernel, or BL (47)-(52)'s first-order one.
+  DensityFilter density_filter = DensityFilter::shepard;
   double xsph = 0.0;                    // XSPH's eps, W (6.6); 0 = off
   StepRule step_rule = StepRule::bl63;  // BL (63) or W (3.88)-(3.90) (time_step.hpp)
   // The failure checks of every step: a density outside [lo, hi] times the lowest and highest
