@@ -78,18 +78,19 @@ TEST_P(HydrostaticTank, BottomPressureMatchesRhoGH) {
   const double p_bottom = sum / static_cast<double>(count);
   // The tolerance: 1 % of rho0 g H (measured: continuity -0.65 %, csph +0.33 %, continuity
   // with the filter -0.65 %).
-  EXPECT_NEAR(p_bottom, rho0 * g * kH, 0.01 * rho0 * g * kH) << preset << " " << shepard_every << " " << filter;
+  EXPECT_NEAR(p_bottom, rho0 * g * kH, 0.01 * rho0 * g * kH)
+      << preset << " " << shepard_every << " " << filter;
   // At rest: spurious velocities far below the free-fall speed sqrt(2 g H) = 1.4 m/s.
   EXPECT_LT(vmax, 0.05 * std::sqrt(2 * g * kH)) << preset << " " << shepard_every << " " << filter;
 }
 
 // With W's filter interval of 40 steps too: the filter averages over a one-sided kernel at the
 // free surface, and still water must remain still water; so must it under the first-order filter.
-INSTANTIATE_TEST_SUITE_P(
-    Presets, HydrostaticTank,
-    ::testing::Values(TankParam{"continuity", 0, "shepard"}, TankParam{"csph", 0, "shepard"},
-                      TankParam{"continuity", 40, "shepard"},
-                      TankParam{"continuity", 40, "first_order"}));
+INSTANTIATE_TEST_SUITE_P(Presets, HydrostaticTank,
+                         ::testing::Values(TankParam{"continuity", 0, "shepard"},
+                                           TankParam{"csph", 0, "shepard"},
+                                           TankParam{"continuity", 40, "shepard"},
+                                           TankParam{"continuity", 40, "first_order"}));
 
 }  // namespace
 }  // namespace flume

@@ -74,6 +74,8 @@ TEST(CaseRepulsiveWalls, BadWallsAreOneLineErrors) {
            {"stroke = 2.0\nfrequency = 1.0", {"repulsive_walls[0].stroke", "out of the domain"}},
            {"spacing = 0.8", {"repulsive_walls[0].spacing", "smaller spacing"}},
            {"put_back_distance = 3.0", {"repulsive_walls[0].put_back_distance"}},
+           // A backstop that cannot push (found laying one along a mirror floor, stop 31).
+           {"reach = 0.5", {"repulsive_walls[0].reach", "put_back_distance", "never push"}},
        }) {
     const std::string msg = error_of(beach_toml(extra));
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;

@@ -75,8 +75,7 @@ void compute_rates(const Scheme<D>& scheme, ParticleSet<D>& ps,
 // to the real particles of ps, the ghosts of the walls (if any) taking part as in a simulation
 // step.
 template <int D>
-void filter_density(const Scheme<D>& scheme, ParticleSet<D>& ps,
-                    const BoxWalls<D>* walls = nullptr,
+void filter_density(const Scheme<D>& scheme, ParticleSet<D>& ps, const BoxWalls<D>* walls = nullptr,
                     DensityFilter kind = DensityFilter::shepard) {
   in_cell_order(scheme.support(), ps, walls,
                 [&](ParticleSet<D>& s, const SweepContext<D>& ctx, const Halo<D>& halo) {

@@ -334,8 +334,8 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   config.cfl = spec.cfl;
   config.fixed_dt = spec.dt;
   config.shepard_every = spec.shepard_every;
-  config.density_filter = spec.density_filter == "first_order" ? DensityFilter::first_order
-                                                               : DensityFilter::shepard;
+  config.density_filter =
+      spec.density_filter == "first_order" ? DensityFilter::first_order : DensityFilter::shepard;
   config.xsph = spec.xsph;
   config.step_rule = spec.time_step == "w388" ? StepRule::w388 : StepRule::bl63;
   config.density_band_lo = spec.density_band_lo;

@@ -225,7 +225,8 @@ convergence_curve = 0  # which [[validation.curves]] entry the study follows (0 
 #   clearance = 0.0 (m: no fluid particle starts behind it or nearer than this; 0 = the force's
 #   reach, `reach` for monaghan_kos and cutoff for lennard_jones, where water at rest settles).
 #   force = "monaghan_kos" (W (6.10)-(6.12), q = y / 2h, A = 0.01 c^2 / h: a smooth wall;
-#   reach = 0.0, spacings: q = y / reach instead, 0 = 2h; water at rest sits up to the reach
+#   reach = 0.0, spacings: q = y / reach instead, 0 = 2h, more than put_back_distance (the force
+#   is taken no nearer than that distance); water at rest sits up to the reach
 #   off the wall, so a reach of one spacing keeps a beach's water near the bed's, whose mirror
 #   holds it half a spacing off) or
 #   "lennard_jones" (W (6.7): strength = D, m^2/s^2, 0 = 5 g H with H the tallest fluid

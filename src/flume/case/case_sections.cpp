@@ -117,6 +117,13 @@ void read_repulsive_walls(const Reader& r, const toml::table& t, CaseSpec& s) {
     ws.put_back_distance = r.in_range(key + ".put_back_distance", 0.01, 2.0) * s.spacing;
     ws.reach = r.non_negative(key + ".reach") * s.spacing;
     if (ws.reach == 0.0) ws.reach = 2.0 * s.h_over_dx * s.spacing;
+    // W (6.11) is evaluated no nearer than the put-back distance (repulsion_monaghan_kos_w610.hpp):
+    // with the reach inside it, q never falls below 1 and the wall would never push.
+    if (ws.force == "monaghan_kos" && !(ws.reach > ws.put_back_distance))
+      r.fail(key + ".reach",
+             fmt::format("= {:.4g} m must exceed put_back_distance = {:.4g} m (the force is taken "
+                         "no nearer than that: this wall would never push)",
+                         ws.reach, ws.put_back_distance));
     ws.clearance = r.non_negative(key + ".clearance");
     if (ws.clearance == 0.0) ws.clearance = ws.force == "lennard_jones" ? ws.cutoff : ws.reach;
     ws.stroke = r.num(key + ".stroke");

@@ -173,11 +173,12 @@ struct CaseSpec {
   double output_interval = 0.01;    // s, diagnostics and probes
   double snapshot_interval = 0.05;  // s; 0 = no snapshots
   int shepard_every = 0;            // steps between density filters, W (6.3); 0 = off
-  std::string density_filter = "shepard";  // W (6.3)'s Shepard average | "first_order" (BL (47))
-  bool profile = false;             // profile.csv at the end time
-  int profile_axis = 1;             // the particles near the line x[axis] = profile_at
-  double profile_at = 0.0;          // m
-  double profile_band = 2.0;        // spacings
+  // The filter's average: "shepard" (W (6.3)) | "first_order" (BL (47)-(52)'s kernel)
+  std::string density_filter = "shepard";
+  bool profile = false;       // profile.csv at the end time
+  int profile_axis = 1;       // the particles near the line x[axis] = profile_at
+  double profile_at = 0.0;    // m
+  double profile_band = 2.0;  // spacings
 
   // [probes]
   bool surge_front = false;
