@@ -1,7 +1,6 @@
 // Base of the schemes that integrate the density in time (continuity, CSPH): the kernel's
 // support, the density filter (W (6.3)'s Shepard average or its first-order form) that the
-// simulation applies every N steps, and
-// XSPH W (6.6).
+// simulation applies every N steps, and XSPH W (6.6).
 #pragma once
 
 #include "flume/schemes/common_steps.hpp"

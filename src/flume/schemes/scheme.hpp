@@ -48,8 +48,7 @@ class Scheme {
   // Shepard average, or its first-order form), ghosts appended and refreshed. (A summation
   // density is recomputed every step, so the case reader does not allow the filter with it.)
   virtual void filter_density(ParticleSet<D>& /*ps*/, const SweepContext<D>& /*ctx*/,
-                              const Halo<D>& /*halo*/,
-                              DensityFilter /*filter*/ = DensityFilter::shepard) const {}
+                              const Halo<D>& /*halo*/, DensityFilter /*filter*/) const {}
   // XSPH W (6.6): ps.xsph, the drift correction of the velocity field u (ghosts refreshed here;
   // common_steps.hpp, xsph_correction).
   virtual void xsph(ParticleSet<D>& ps, const SweepContext<D>& ctx, const Halo<D>& halo,
