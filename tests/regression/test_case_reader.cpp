@@ -92,6 +92,15 @@ TEST(CaseReader, OutOfRangeValueIsAnError) {
             "first_order");
   expect_one_line_with(error_of(kValid, {"scheme.density_filter=mls"}),
                        {"scheme.density_filter", "shepard", "first_order"});
+  EXPECT_EQ(test::spec_from(kValid, {}).ghost_pressure, "mirrored");  // W 6.1 unless asked
+  EXPECT_EQ(test::spec_from(kValid, {"boundaries.ghost_pressure=hydrostatic"}).ghost_pressure,
+            "hydrostatic");
+  expect_one_line_with(error_of(kValid, {"boundaries.ghost_pressure=linear"}),
+                       {"boundaries.ghost_pressure", "mirrored", "hydrostatic"});
+  // The hydrostatic step is a Tait liquid's: a gas is refused.
+  expect_one_line_with(error_of(kValid, {"scheme.preset=sph-euler", "eos.kind=ideal_gas",
+                                         "boundaries.ghost_pressure=hydrostatic"}),
+                       {"boundaries.ghost_pressure", "tait"});
 }
 
 TEST(CaseReader, BadOverridesAndSyntax) {

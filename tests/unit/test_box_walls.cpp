@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -290,6 +291,58 @@ TEST(BoxWalls, UpdateScalarCopiesFromSources) {
     EXPECT_EQ(ps.rho[ps.n_real + g], ps.rho[s]);
     EXPECT_EQ(ps.p[ps.n_real + g], ps.p[s]);
   }
+}
+
+// boundaries.ghost_pressure = "hydrostatic" (halo.hpp set_hydrostatic): a ghost below the floor
+// carries p(rho_s) + rho_s g . (x_g - x_s) and the Tait density of that pressure; a ghost beside
+// a side wall (g . (x_g - x_s) = 0) keeps its source's state. The expected values are computed
+// here with std::pow from the Tait law, not with TaitEos; tolerance: the pow round trip, a few
+// ulp of rho (1e-9 kg/m^3 against a step of 1.5 kg/m^3).
+TEST(BoxWalls, HydrostaticGhostsCarryTheColumnAcrossTheFloor) {
+  ParticleSet<2> ps;
+  add_particle<2>(ps, {{0.05, 0.03}}, {{0.3, 0.7}}, {{0.2, 0.6}});
+  const auto box = unit_box<2>(WallKind::free_slip);
+  const double rho0 = 1000.0, gamma = 7.0, c0 = 20.0, kappa = rho0 * c0 * c0 / gamma, g = 9.81;
+  Halo<2> halo;
+  halo.set_hydrostatic(Vec<2>{{0.0, -g}}, TaitEos{rho0, gamma, kappa});
+  box.build_halo(ps, kRange, halo);
+  ASSERT_EQ(halo.size(), 3u);  // the left wall's, the floor's and the corner's
+  const auto tait_p = [&](double rho) { return kappa * (std::pow(rho / rho0, gamma) - 1.0); };
+  const auto tait_rho = [&](double p) { return rho0 * std::pow(1.0 + p / kappa, 1.0 / gamma); };
+  for (const double rho_s : {1002.0, 999.5}) {
+    ps.rho[0] = rho_s;
+    if (rho_s == 1002.0)
+      halo.append_ghosts(ps);
+    else
+      halo.update_density(ps);
+    for (std::size_t k = 0; k < halo.size(); ++k) {
+      const std::size_t i = ps.n_real + k;
+      const double depth = -ps.x[i][1] - ps.x[0][1];  // 0.06 m below the source, or 0
+      const double p = tait_p(rho_s) + rho_s * g * (ps.x[i][1] < 0.0 ? 2 * 0.03 : 0.0);
+      EXPECT_NEAR(ps.p[i], p, 1e-9 * kappa) << "ghost " << k << " rho_s " << rho_s;
+      EXPECT_NEAR(ps.rho[i], tait_rho(p), 1e-9) << "ghost " << k << " depth " << depth;
+      EXPECT_NEAR(ps.c[i], std::sqrt(gamma * (p + kappa) / ps.rho[i]), 1e-9);
+      // The step's size, to first order: dp / c_s^2 = rho_s g 2y / c_s^2, about 1.46 kg/m^3
+      // (c_s the source's sound speed); the second-order term, (gamma - 1) / 2 drho / rho of
+      // the step, is 0.45 % of it: within 1 %.
+      const double c2 = gamma * (tait_p(rho_s) + kappa) / rho_s;
+      if (ps.x[i][1] < 0.0)
+        EXPECT_NEAR(ps.rho[i] - rho_s, rho_s * g * 0.06 / c2, 0.01 * rho_s * g * 0.06 / c2);
+      else
+        EXPECT_NEAR(ps.rho[i], rho_s, 1e-9);
+    }
+  }
+  // update_pressure gives the same state (the sources' pressure is re-derived from rho).
+  ps.rho[0] = 1001.0;
+  halo.update_pressure(ps);
+  const double p_floor = tait_p(1001.0) + 1001.0 * g * 0.06;
+  bool seen = false;
+  for (std::size_t k = 0; k < halo.size(); ++k)
+    if (ps.x[ps.n_real + k][1] < 0.0) {
+      EXPECT_NEAR(ps.p[ps.n_real + k], p_floor, 1e-9 * kappa);
+      seen = true;
+    }
+  EXPECT_TRUE(seen);
 }
 
 TEST(BoxWalls, UpdateVelocityMapsFromSources) {

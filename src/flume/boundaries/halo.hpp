@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "flume/core/particle_set.hpp"
+#include "flume/equations/eos_tait.hpp"
 
 namespace flume {
 
@@ -33,6 +34,24 @@ class Halo {
     return maps_;
   }
   std::size_t size() const { return maps_.size(); }
+
+  // Hydrostatic mirror ghosts (boundaries.ghost_pressure = "hydrostatic"): a reflected ghost
+  // (any S entry -1) carries its source's pressure plus the hydrostatic step between them,
+  //   p_g = p(rho_s) + rho_s g . (x_g - x_s),
+  // and the Tait density of that pressure (BL (60) inverted). W 6.1 mirrors p and rho as they
+  // are, so below a floor the ghosts stand at the pressure of the water above it: the pressure
+  // profile folds into a V at the wall. The bottom row then feels less push from below than a
+  // continued column would give, and W (6.3)'s filter, which averages across the wall, lowers
+  // its density at every filtering (the creep that brings a still tank's bottom row down onto
+  // its own ghosts, issue 10). With the step the profile runs on straight through the wall, as
+  // Adami, Hu & Adams (2012) extrapolate a wall's pressure. Side walls (g . (x_g - x_s) = 0)
+  // and periodic images (shifts only) are unchanged.
+  void set_hydrostatic(const Vec<D>& gravity, const TaitEos& eos) {
+    hydrostatic_ = true;
+    gravity_ = gravity;
+    eos_ = eos;
+  }
+  bool hydrostatic() const { return hydrostatic_; }
   const std::vector<GhostMap<D>>& maps() const { return maps_; }
 
   // Where ghost g stands: S x_source + t.
@@ -71,7 +90,28 @@ class Halo {
       ps.p[i] = ps.p[s];
       ps.c[i] = ps.c[s];
       if (energy) ps.e[i] = ps.e[s];  // W 6.1: ghosts copy the internal energy too
+      if (hydrostatic_) hydrostatic_state(ps, g);
     }
+  }
+
+  // The ghosts' density after their sources' has changed (a filter, a summation): copied, or
+  // with hydrostatic ghosts their density, pressure and sound speed from the source's density.
+  void update_density(ParticleSet<D>& ps) const {
+    if (!hydrostatic_) return update_scalar(ps, ps.rho);
+    for (std::size_t g = 0; g < maps_.size(); ++g)
+      hydrostatic_state(ps, g);
+  }
+
+  // The ghosts' pressure and sound speed after their sources' have been computed: copied, or
+  // with hydrostatic ghosts (whose density then moves with them) as update_density.
+  void update_pressure(ParticleSet<D>& ps) const {
+    if (!hydrostatic_) {
+      update_scalar(ps, ps.p);
+      update_scalar(ps, ps.c);
+      return;
+    }
+    for (std::size_t g = 0; g < maps_.size(); ++g)
+      hydrostatic_state(ps, g);
   }
 
   // Maps a velocity field (v or v_half) from the sources to their ghosts. A moving wall's c is
@@ -128,6 +168,27 @@ class Halo {
   }
 
  private:
+  // rho, p, c of ghost g from its source's density, with the hydrostatic step when it is a
+  // reflection (set_hydrostatic); a shifted (periodic) image copies them.
+  void hydrostatic_state(ParticleSet<D>& ps, std::size_t g) const {
+    const auto& mp = maps_[g];
+    const std::size_t i = ps.n_real + g, s = mp.source;
+    bool reflected = false;
+    for (int k = 0; k < D; ++k)
+      reflected = reflected || mp.scale[k] < 0.0;
+    if (!reflected) {
+      ps.rho[i] = ps.rho[s];
+      ps.p[i] = ps.p[s];
+      ps.c[i] = ps.c[s];
+      return;
+    }
+    const double rise = dot(gravity_, ps.x[i] - ps.x[s]);  // g . (x_g - x_s), m^2/s^2
+    const double p = eos_.pressure(ps.rho[s]) + ps.rho[s] * rise;
+    ps.rho[i] = eos_.density_at(p);
+    ps.p[i] = p;
+    ps.c[i] = eos_.sound_speed(ps.rho[i], p);
+  }
+
   static Vec<D> mul(const Vec<D>& s, const Vec<D>& v) {
     Vec<D> r;
     for (int k = 0; k < D; ++k)
@@ -136,6 +197,9 @@ class Halo {
   }
   std::vector<GhostMap<D>> maps_;
   std::vector<GhostMap<D>> scratch_;  // reused by reorder
+  bool hydrostatic_ = false;
+  Vec<D> gravity_{};
+  TaitEos eos_{};
 };
 
 }  // namespace flume

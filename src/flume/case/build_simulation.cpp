@@ -337,6 +337,7 @@ Simulation<D> build_simulation(const CaseSpec& spec) {
   config.density_filter =
       spec.density_filter == "first_order" ? DensityFilter::first_order : DensityFilter::shepard;
   config.xsph = spec.xsph;
+  config.hydrostatic_ghosts = spec.ghost_pressure == "hydrostatic";
   config.step_rule = spec.time_step == "w388" ? StepRule::w388 : StepRule::bl63;
   config.density_band_lo = spec.density_band_lo;
   config.density_band_hi = spec.density_band_hi;

@@ -185,6 +185,11 @@ CaseSpec build_spec(const toml::table& t, const std::filesystem::path& file, int
              "= \"periodic\": the vertical axis (gravity's) cannot be periodic");
   }
   s.periodic_from = r.non_negative("boundaries.periodic_from");
+  s.ghost_pressure = r.one_of("boundaries.ghost_pressure", {"mirrored", "hydrostatic"});
+  if (s.ghost_pressure == "hydrostatic" && s.eos != "tait")
+    r.fail("boundaries.ghost_pressure",
+           "= \"hydrostatic\" needs a liquid (eos.kind = \"tait\"): the step is the Tait "
+           "density of p + rho g . (x_ghost - x)");
   // The summation of particles.mass sees the particles only: beside a wall it would miss the
   // ghosts' share and give the particles there masses too large.
   if (s.mass == "summation" &&

@@ -95,6 +95,10 @@ y_min = "free_slip"
 y_max = "free_slip"
 {z_walls}periodic_from = 0.0    # s: periodic sides are free-slip walls before this time (W 6.4.2
                        # forms the wave in a closed tank and makes it periodic at t = 4 s)
+ghost_pressure = "mirrored"  # mirrored (W 6.1: a mirror ghost copies p and rho) | hydrostatic
+                       # (a Tait liquid's: the ghost's p adds rho g . (x_ghost - x), its rho
+                       # is the Tait density of that p, so the pressure runs on straight
+                       # through a floor instead of folding back)
 
 [output]
 interval = 0.01        # s between rows of diagnostics.csv and probes.csv

@@ -24,8 +24,9 @@
 
 namespace flume {
 
-// p and c for the real particles, then copied to the ghosts: Tait p(rho_a), BL (60), or the
-// ideal gas p(rho_a, e_a); c_a the local sound speed. One loop per equation of state, each
+// p and c for the real particles, then copied to the ghosts (hydrostatic ghosts add the
+// column across the wall, halo.hpp): Tait p(rho_a), BL (60), or the ideal gas p(rho_a, e_a);
+// c_a the local sound speed. One loop per equation of state, each
 // without a branch, so that it vectorises.
 template <int D>
 void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& halo) {
@@ -42,8 +43,7 @@ void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& 
       ps.c[i] = tait.sound_speed(ps.rho[i], ps.p[i]);
     });
   }
-  halo.update_scalar(ps, ps.p);
-  halo.update_scalar(ps, ps.c);
+  halo.update_pressure(ps);
 }
 
 // Sweep: rho_a <- Shepard average of the densities, W (6.3), then copied to the ghosts. The
@@ -56,7 +56,7 @@ void shepard_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D
   ShepardFilterW63<D> filter{ps, filtered};
   sweep<D, Kernel>(ctx, ps, "shepard_filter", filter);
   std::copy(filtered.begin(), filtered.end(), ps.rho.begin());
-  halo.update_scalar(ps, ps.rho);
+  halo.update_density(ps);
 }
 
 // Sweep: rho_a <- the density interpolated with BL (47)-(52)'s first-order corrected kernel,
@@ -69,7 +69,7 @@ template <int D, class Kernel>
 void first_order_filter(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Halo<D>& halo) {
   DensitySummationFirstOrderBL47<D> filter{ps};
   sweep<D, Kernel>(ctx, ps, "first_order_filter", filter);
-  halo.update_scalar(ps, ps.rho);
+  halo.update_density(ps);
 }
 
 // The stress of BL (24)'s pair form for every particle, ghosts included, from ps.grad_v (once

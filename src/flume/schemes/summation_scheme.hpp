@@ -46,9 +46,8 @@ class SummationScheme final : public Scheme<D> {
           ps.c[i] = tait.sound_speed(ps.rho[i], ps.p[i]);
         },
         density);
-    halo.update_scalar(ps, ps.rho);
-    halo.update_scalar(ps, ps.p);
-    halo.update_scalar(ps, ps.c);
+    halo.update_density(ps);
+    halo.update_pressure(ps);
 
     if (phys_.stress_term()) update_viscous_stress<D, Kernel>(ctx, ps, halo, phys_);
     Force<D> pressure{ps};

@@ -43,6 +43,7 @@ Simulation<D>::Simulation(ParticleSet<D> particles, BoxWalls<D> walls,
       config_(config),
       limit_(phys_, config_.cfl, config_.step_rule) {
   ps_.drop_ghosts();
+  if (config_.hydrostatic_ghosts) halo_.set_hydrostatic(phys_.gravity, phys_.eos.tait());
   ps_.use_only(scheme_->fields() | limit_.fields() | (config_.xsph > 0.0 ? kFieldXsph : 0u) |
                (config_.integrator == Integrator::leap_frog ? 0u : RungeKutta<D>::fields()));
   // The pressure of the starting density, so that the state written before the first step

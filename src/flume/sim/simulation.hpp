@@ -33,7 +33,10 @@ struct SimulationConfig {
   int shepard_every = 0;  // steps between density filters W (6.3); 0 = never
   // The filter's average: W (6.3)'s Shepard kernel, or BL (47)-(52)'s first-order one.
   DensityFilter density_filter = DensityFilter::shepard;
-  double xsph = 0.0;                    // XSPH's eps, W (6.6); 0 = off
+  double xsph = 0.0;  // XSPH's eps, W (6.6); 0 = off
+  // Mirror ghosts with the hydrostatic step in their pressure (Halo::set_hydrostatic); a
+  // liquid's (Tait) only.
+  bool hydrostatic_ghosts = false;
   StepRule step_rule = StepRule::bl63;  // BL (63) or W (3.88)-(3.90) (time_step.hpp)
   // The failure checks of every step: a density outside [lo, hi] times the lowest and highest
   // starting density, a step below min_dt_ratio times the first one.
