@@ -165,7 +165,7 @@ struct CaseSpec {
   // per axis lower, upper: "free_slip" | "no_slip" | "open" | "periodic" (both sides of an axis)
   std::vector<std::string> walls;
   double periodic_from = 0.0;  // s: periodic sides are free-slip walls before this time (W 6.4.2)
-  // "mirrored" (W 6.1: ghosts copy p and rho) | "hydrostatic" (plus rho0 g across the wall)
+  // "mirrored" (W 6.1: ghosts copy p and rho) | "hydrostatic" (p plus rho g . (x_ghost - x))
   std::string ghost_pressure = "mirrored";
   std::vector<FluidBlock> blocks;
   std::vector<MovingWall> moving_walls;
