@@ -11,9 +11,10 @@ echo "== build (Release) and tests"
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure
 
-# Under the sanitizers without the `settling` tests (still tanks run for thousands of steps,
-# 60-110 s each there, 13 of the suite's 14 minutes; tests/CMakeLists.txt): their code paths run
-# there in the short tests, and their physics in the Release suite above.
+# Under the sanitizers each level is one process (tests/CMakeLists.txt), and the `settling`
+# tests are left out (still tanks run for thousands of steps, 60-110 s each there, 13 of the
+# suite's 14 minutes): their code paths run there in the short tests, their physics in the
+# Release suite above. The suite takes about 2.5 minutes.
 echo "== build with AddressSanitizer + UndefinedBehaviorSanitizer, and tests"
 bash scripts/build.sh --sanitize
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
