@@ -1,6 +1,7 @@
 // `flume bench` as a user runs it: a tiny benchmark (2000 particles, 3 steps, one thread) exits
-// with 0 and writes bench.json with every key of the speed issue and sane values; bad input
-// (an unknown preset, no particles, an --out that cannot be a folder) exits with 2 and one line.
+// with 0 and writes bench.json with every key of the speed issue and sane values, the figures
+// of the median repeat; bad input (an unknown preset, no particles, no repeats, an --out that
+// cannot be a folder) exits with 2 and one line.
 // Speed itself is never asserted: the figures depend on the machine.
 #include <gtest/gtest.h>
 
@@ -70,12 +71,38 @@ TEST_F(BenchCli, TinyRunWritesBenchJson) {
   // The phases are parts of the timed steps.
   EXPECT_GT(total, 0.0);
   EXPECT_LE(total, wall * 1.01);
+
+  // Three repeats by default; the figures are the median one's.
+  ASSERT_TRUE(run.contains("repeat_wall_seconds"));
+  auto repeats = run["repeat_wall_seconds"].get<std::vector<double>>();
+  ASSERT_EQ(repeats.size(), 3u);
+  std::sort(repeats.begin(), repeats.end());
+  EXPECT_EQ(wall, repeats[1]);
+}
+
+TEST_F(BenchCli, RepeatsReportTheMedianRepeat) {
+  const auto out = dir_ / "bench";
+  const auto r = flume(
+      "bench --particles 2000 --steps 2 --repeats 5 --preset standard --threads 1 "
+      "--quiet --out " +
+      out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto run = nlohmann::json::parse(slurp(out / "bench.json")).at(0);
+  auto repeats = run.at("repeat_wall_seconds").get<std::vector<double>>();
+  ASSERT_EQ(repeats.size(), 5u);
+  for (double s : repeats)
+    EXPECT_GT(s, 0.0);
+  std::sort(repeats.begin(), repeats.end());
+  // Exactly the middle one of the five (not a mean, not the first).
+  EXPECT_EQ(run.at("wall_seconds").get<double>(), repeats[2]);
+  EXPECT_EQ(run.at("steps"), 2);
 }
 
 TEST_F(BenchCli, BadInputExitsWithTwoAndOneLine) {
   std::ofstream(dir_ / "a_file") << "x";
-  for (const std::string& args : std::vector<std::string>{
-           "--preset bogus", "--particles 0", "--out " + (dir_ / "a_file" / "sub").string()}) {
+  for (const std::string& args :
+       std::vector<std::string>{"--preset bogus", "--particles 0", "--repeats 0",
+                                "--out " + (dir_ / "a_file" / "sub").string()}) {
     const auto r = flume("bench --steps 1 --particles 2000 --threads 1 " + args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -145,6 +145,9 @@ int main(int argc, char** argv) {
       ben->add_option("--steps", bsteps,
                       "measured steps of every run (default 200 to 3e4 particles, 50 to 3e5, 10)");
   ben->add_option("--warmup", bopt.warmup, "steps before the clock starts (default 3)");
+  ben->add_option("--repeats", bopt.repeats,
+                  "timed runs of --steps steps one after the other; the median is reported "
+                  "(default 3)");
   ben->add_option("--support", bopt.support, "kernel support in spacings (default 2.83)");
   ben->add_option("--out", bout, "folder of bench.json (default the current directory)");
   ben->add_flag("--quiet", bopt.quiet, "no progress lines");

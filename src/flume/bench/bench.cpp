@@ -52,6 +52,8 @@ int bench(const BenchOptions& options) {
   const std::vector<int> threads = options.threads.empty() ? std::vector<int>{0} : options.threads;
   if (options.steps && *options.steps < 1)
     throw InputError(fmt::format("bench: --steps {}: must be positive", *options.steps));
+  if (options.repeats < 1)
+    throw InputError(fmt::format("bench: --repeats {}: must be positive", options.repeats));
   if (options.warmup < 0)
     throw InputError(fmt::format("bench: --warmup {}: must be >= 0", options.warmup));
   for (int t : options.threads)
@@ -70,6 +72,7 @@ int bench(const BenchOptions& options) {
         c.support = options.support;
         c.steps = options.steps ? *options.steps : bench_default_steps(n);
         c.warmup = options.warmup;
+        c.repeats = options.repeats;
         c.threads = t;
         plan.push_back({c, spec});
       }
@@ -83,12 +86,12 @@ int bench(const BenchOptions& options) {
     const std::string what = fmt::format("preset {}, {} particles requested, {}", c.preset,
                                          c.particles, threads_label(c.threads));
     if (!options.quiet)
-      std::cerr << fmt::format("flume bench: [{}/{}] {}: {} steps after {} warm-up ... ", i + 1,
-                               plan.size(), what, c.steps, c.warmup)
+      std::cerr << fmt::format("flume bench: [{}/{}] {}: {} x {} steps after {} warm-up ... ",
+                               i + 1, plan.size(), what, c.repeats, c.steps, c.warmup)
                 << std::flush;
     BenchResult r = run_bench_isolated(c, plan[i].spec);
     if (!options.quiet)
-      std::cerr << (r.error.empty() ? fmt::format("{:.3g} s\n", r.wall_seconds)
+      std::cerr << (r.error.empty() ? fmt::format("median {:.3g} s\n", r.wall_seconds)
                                     : std::string("failed\n"));
     if (r.error.empty()) {
       done.push_back(std::move(r));

@@ -17,6 +17,7 @@ struct BenchOptions {
   std::vector<int> threads;          // empty = OpenMP's default (all cores)
   std::optional<int> steps;          // measured steps of every run; none = by size
   int warmup = 3;                    // steps before the clock starts
+  int repeats = 3;                   // timed runs of `steps` steps; the median one is reported
   double support = 2.83;             // kernel support in spacings (DualSPHysics's 2h)
   std::filesystem::path out_dir = ".";
   bool quiet = false;  // no progress lines on stderr

@@ -1,7 +1,10 @@
 // One `flume bench` run: build the case, take a few warm-up steps, then time a fixed number of
-// steps, with the seconds per phase of the step, the output a real run would compute, and the
-// mean neighbour count. run_bench_isolated does it in a forked child to get that run's own peak
-// memory. The result converts to and from the JSON object of bench.json.
+// steps a few times over (repeats, one after the other, the simulation going on) and keep the
+// median repeat (as the reference step reports its median of three: a single timing on a shared
+// machine takes whatever else the machine did in that second), with the seconds per phase of the
+// step, the output a real run would compute, and the mean neighbour count. run_bench_isolated does
+// it in a forked child to get that run's own peak memory. The result converts to and from the JSON
+// object of bench.json.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -19,6 +22,7 @@ struct BenchConfig {
   double support = 2.83;   // kernel support in spacings
   int steps = 10;          // measured steps
   int warmup = 3;          // steps taken before the clock starts, not counted
+  int repeats = 3;         // timed runs of `steps` steps, one after the other; the median is kept
   int threads = 0;         // OpenMP threads; 0 = OpenMP's default (all cores)
 };
 
@@ -29,8 +33,10 @@ struct BenchResult {
   double spacing = 0.0;       // m
   double support = 0.0;       // kernel support in spacings
   double neighbours = 0.0;    // mean per particle at the end, excluding itself (real particles)
-  long steps = 0;             // measured steps
+  long steps = 0;             // measured steps (of one repeat)
   long warmup = 0;
+  // Wall seconds of each repeat, in order; wall_seconds and phases are the median repeat's.
+  std::vector<double> repeat_seconds;
   double setup_seconds = 0.0;  // building the particles and the simulation
   double wall_seconds = 0.0;   // the measured steps, output included
   double particle_steps_per_second = 0.0;

@@ -69,8 +69,8 @@ std::string bench_table(const std::vector<BenchResult>& results) {
   for (std::size_t row = 0; row < results.size(); ++row)
     add_line([row](const Column& c) { return c.cells[row]; });
   out +=
-      "phases in % of the measured wall time; neighbours: mean per particle within the kernel "
-      "support\n";
+      "each run: the median of its repeats (wall s, M p-steps/s and phases); phases in % of the "
+      "measured wall time; neighbours: mean per particle within the kernel support\n";
   return out;
 }
 
