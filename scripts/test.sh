@@ -27,5 +27,7 @@ clang-format --dry-run --Werror $files
 echo "== fuzzing the case reader and --set (libFuzzer, ASan + UBSan, 60 s)"
 bash scripts/fuzz.sh 60
 
-echo "== quick validation (flume validate --quick)"
-./build/flume validate --quick --out build/validation-quick
+# Two cases at once, one thread each: the quick set's coarse runs gain nothing from a second
+# thread (README, `--jobs`).
+echo "== quick validation (flume validate --quick --jobs 2)"
+./build/flume validate --quick --jobs 2 --out build/validation-quick

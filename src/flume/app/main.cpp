@@ -126,6 +126,10 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   val->add_option("--out", vout, "output folder (default validation/)");
   val->add_option("--threads", vopt.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  val->add_option("--jobs", vopt.jobs,
+                  "cases validated at once, each in its own process with cores/jobs threads "
+                  "unless --threads is given (default 1)")
+      ->check(CLI::PositiveNumber);
   val->add_flag("--quiet", vopt.quiet, "no messages");
 
   auto* ben = app.add_subcommand(

@@ -10,9 +10,9 @@
 #include <numeric>
 #include <span>
 
-#include "flume/bench/child_process.hpp"
 #include "flume/bench/neighbour_count.hpp"
 #include "flume/case/build_simulation.hpp"
+#include "flume/run/child_process.hpp"
 #include "flume/sim/diagnostics.hpp"
 
 namespace flume {

@@ -80,6 +80,7 @@ void Simulation<D>::restore(const ParticleSet<D>& particles, const SimulationSta
   last_dt_ = state.last_dt;
   first_dt_ = state.first_dt;
   integrator_.set_history(state.leapfrog_dt_prev);
+  h_range_known_ = false;
   for (std::size_t i = 0; i < ps_.n_real; ++i)
     ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
   walls_at(time_);
@@ -107,15 +108,21 @@ void Simulation<D>::prepare_neighbours(double range) {
 
 template <int D>
 double Simulation<D>::neighbours_at(double t) {
-  double h_max = 0.0, h_min = ps_.n_real ? ps_.h[0] : 0.0;
-  for (std::size_t i = 0; i < ps_.n_real; ++i) {
-    h_max = std::max(h_max, ps_.h[i]);
-    h_min = std::min(h_min, ps_.h[i]);
+  // The smoothing lengths' range; scanned once when h does not evolve (a serial scan every
+  // step cost about 1 % of the dam break's step at 1e5 particles, 2 threads).
+  if (!h_range_known_ || evolved().smoothing_length) {
+    h_max_ = 0.0;
+    h_min_ = ps_.n_real ? ps_.h[0] : 0.0;
+    for (std::size_t i = 0; i < ps_.n_real; ++i) {
+      h_max_ = std::max(h_max_, ps_.h[i]);
+      h_min_ = std::min(h_min_, ps_.h[i]);
+    }
+    h_range_known_ = true;
   }
-  const double range = scheme_->support() * h_max;
+  const double range = scheme_->support() * h_max_;
   walls_at(t);  // moving walls stand where they are at t while the rates are taken
   prepare_neighbours(range);
-  uniform_h_ = h_min == h_max ? h_max : 0.0;
+  uniform_h_ = h_min_ == h_max_ ? h_max_ : 0.0;
   return range;
 }
 

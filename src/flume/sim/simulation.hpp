@@ -152,6 +152,10 @@ class Simulation {
   double last_dt_ = 0.0;
   double first_dt_ = 0.0;   // the step rule's first value, s
   double uniform_h_ = 0.0;  // the common smoothing length of this step's particles, or 0
+  // The real particles' least and largest h (neighbours_at), known until h evolves or the
+  // state is restored.
+  double h_min_ = 0.0, h_max_ = 0.0;
+  bool h_range_known_ = false;
   long steps_ = 0;
   double rho_lo_ = 0.0, rho_hi_ = 0.0;  // the density band, kg/m^3 (from the starting state)
   PhaseClock clock_;

@@ -215,43 +215,45 @@ std::string profile_section(const CaseResult& cr) {
   return md;
 }
 
-std::string report_markdown(const std::vector<CaseResult>& results, bool quick) {
-  std::string md = fmt::format(
+std::string report_heading(bool quick) {
+  return fmt::format(
       "# flume validation report\n\nflume {}{}. Errors are relative, |flume - reference| / "
       "|reference|, unless a curve says absolute; in the tables they are signed (positive: flume "
       "ahead of / above the reference).\n",
       FLUME_VERSION, quick ? ", quick (reduced-resolution) set" : "");
-  for (const auto& cr : results) {
-    md += fmt::format("\n## {}\n\n{}\n\nRuns (scheme, kernel `{}`, h/dx = {}):\n\n", cr.spec.name,
-                      cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
+}
+
+std::string report_case_section(const CaseResult& cr) {
+  std::string md =
+      fmt::format("\n## {}\n\n{}\n\nRuns (scheme, kernel `{}`, h/dx = {}):\n\n", cr.spec.name,
+                  cr.spec.description, cr.spec.kernel, cr.spec.h_over_dx);
+  for (const auto& s : cr.series)
+    md += run_line(s.label, s.run, cr.spec.spacing, variant_note(s));
+  for (const auto& s : cr.series)
+    for (const auto& [companion, run] : s.companions)
+      md += run_line(s.label + "/" + companion, run, cr.spec.spacing,
+                     " (companion: the reference of the curves with run:" + companion + ")");
+  if (cr.coarse_spacing > 0.0)
     for (const auto& s : cr.series)
-      md += run_line(s.label, s.run, cr.spec.spacing, variant_note(s));
-    for (const auto& s : cr.series)
-      for (const auto& [companion, run] : s.companions)
-        md += run_line(s.label + "/" + companion, run, cr.spec.spacing,
-                       " (companion: the reference of the curves with run:" + companion + ")");
-    if (cr.coarse_spacing > 0.0)
-      for (const auto& s : cr.series)
-        md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");
-    for (const auto& level : cr.study)
-      md += run_line(cr.spec.preset, level.run, level.spacing, " (convergence study)");
-    if (!cr.overrides.empty()) {
-      md += "\nEvery run with `--set`:";
-      for (const auto& o : cr.overrides)
-        md += " `" + o + "`";
-      md += " (not the case as bundled).\n";
-    }
-    if (!cr.spec.notes.empty()) {
-      md += "\nWhat the papers report:\n\n";
-      for (const auto& n : cr.spec.notes)
-        md += "- " + n + "\n";
-    }
-    if (!cr.series.front().run.completed) continue;
-    for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
-      md += curve_section(cr, c);
-    md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) + study_section(cr) +
-          diagnostics_section(cr) + pictures_section(cr) + crest_pictures_section(cr);
+      md += run_line(s.label, s.coarse_run, cr.coarse_spacing, " (coarse)");
+  for (const auto& level : cr.study)
+    md += run_line(cr.spec.preset, level.run, level.spacing, " (convergence study)");
+  if (!cr.overrides.empty()) {
+    md += "\nEvery run with `--set`:";
+    for (const auto& o : cr.overrides)
+      md += " `" + o + "`";
+    md += " (not the case as bundled).\n";
   }
+  if (!cr.spec.notes.empty()) {
+    md += "\nWhat the papers report:\n\n";
+    for (const auto& n : cr.spec.notes)
+      md += "- " + n + "\n";
+  }
+  if (!cr.series.front().run.completed) return md;
+  for (std::size_t c = 0; c < cr.spec.curves.size(); ++c)
+    md += curve_section(cr, c);
+  md += schemes_section(cr) + profile_section(cr) + convergence_section(cr) + study_section(cr) +
+        diagnostics_section(cr) + pictures_section(cr) + crest_pictures_section(cr);
   return md;
 }
 

@@ -9,6 +9,8 @@
 
 namespace flume {
 
-std::string report_markdown(const std::vector<CaseResult>& results, bool quick);
+// report.md is the heading, then each case's section in the order the cases were asked.
+std::string report_heading(bool quick);
+std::string report_case_section(const CaseResult& cr);
 
 }  // namespace flume

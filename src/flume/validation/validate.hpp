@@ -15,6 +15,9 @@ struct ValidateOptions {
   std::vector<std::string> sets;   // --set KEY=VALUE, applied to every run after the quick set
   std::filesystem::path out_dir = "validation";
   int threads = 0;
+  // Cases validated at once, each in a process of its own (with threads = cores / jobs unless
+  // `threads` is given); results.json and report.md keep the order of the cases.
+  int jobs = 1;
   bool quiet = false;
 };
 

@@ -1,14 +1,17 @@
-// Running a piece of work in a forked child process: `flume bench` runs each configuration in
+// Running pieces of work in forked child processes: `flume bench` runs each configuration in
 // its own child so that the child's peak resident memory (from wait4) is that run's alone, and
-// so that runs cannot affect each other (heap growth, a crash, a blow-up).
+// so that runs cannot affect each other (heap growth, a crash, a blow-up); `flume validate
+// --jobs N` runs N cases at once, each in its own child.
 //
 // The caller must not have started OpenMP threads (entered a parallel region) before forking:
 // the child inherits the runtime's bookkeeping but not its threads, and GCC's libgomp can then
-// hang in the child's first parallel region. The bench's parent process only reads case files.
+// hang in the child's first parallel region. The parents of bench and validate only read case
+// files.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace flume {
 
@@ -25,5 +28,10 @@ struct ChildResult {
 // reaps the child with wait4 and returns what it got. Throws std::runtime_error if the pipe or
 // the fork cannot be created.
 ChildResult run_in_child(const std::function<std::string()>& body);
+
+// Each body in a child of its own as run_in_child, up to `jobs` children at a time (started in
+// order, each as soon as one before it ends); the results in the order of the bodies.
+std::vector<ChildResult> run_in_children(const std::vector<std::function<std::string()>>& bodies,
+                                         int jobs);
 
 }  // namespace flume
