@@ -130,14 +130,7 @@ TEST_F(Cli, ValidateFailsOnlyOnGatedCurves) {
   // gated, it leaves the validation passing; gated, it fails it with exit status 1.
   std::ofstream(dir_ / "ref.csv") << "t,height,front\n0.0,1.0,2.0\n";
   const auto validation = [](bool gated) {
-    return fmt::format(R"(
-[[validation.curves]]
-probe = "column_height"
-reference = "ref.csv"
-reference_x = "t"
-reference_y = "height"
-value_scale = 0.05715
-tolerance = 0.01
+    return test::column_height_curve_toml() + fmt::format(R"(tolerance = 0.01
 quick_tolerance = 0.01
 [[validation.curves]]
 probe = "surge_front"
@@ -149,7 +142,7 @@ tolerance = 0.1
 quick_tolerance = 0.1
 gated = {}
 )",
-                       gated);
+                                                          gated);
   };
   const std::string env = "FLUME_CASES_DIR=" + dir_.string() + " ";
   const auto out = dir_ / "validation";
@@ -171,13 +164,7 @@ TEST_F(Cli, ValidateAppliesSetOverridesToEveryRun) {
   write_case(test::dam_break_toml("continuity", 8, 0.002) + R"(
 [validation]
 variants = ["scheme.preset=csph"]
-[[validation.curves]]
-probe = "column_height"
-reference = "ref.csv"
-reference_x = "t"
-reference_y = "height"
-value_scale = 0.05715
-)");
+)" + test::column_height_curve_toml());
   const std::string env = "FLUME_CASES_DIR=" + dir_.string() + " ";
   const auto out = dir_ / "validation";
   const auto r =

@@ -22,15 +22,8 @@ class ValidateJobs : public test::FlumeBinaryTest {
     std::string toml = test::dam_break_toml(preset, 8, 0.002);
     const std::string old_name = "name = \"small_dam_break\"";
     toml.replace(toml.find(old_name), old_name.size(), "name = \"" + name + "\"");
-    std::ofstream(dir_ / (name + ".toml")) << toml << R"(
-[validation]
-[[validation.curves]]
-probe = "column_height"
-reference = "ref.csv"
-reference_x = "t"
-reference_y = "height"
-value_scale = 0.05715
-)";
+    std::ofstream(dir_ / (name + ".toml")) << toml << "\n[validation]\n"
+                                           << test::column_height_curve_toml();
   }
   test::CliResult validate(const std::string& args) {
     return flume_env("FLUME_CASES_DIR=" + dir_.string() + " ",

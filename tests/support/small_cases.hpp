@@ -44,6 +44,19 @@ column_height = true
                      fmt::arg("lx", 4 * a), fmt::arg("ly", 2 * a), fmt::arg("a", a));
 }
 
+// A [[validation.curves]] entry for dam_break_toml's case: its column height against the
+// `height` column of ref.csv (beside the case file, against `t`), in units of the default a.
+inline std::string column_height_curve_toml() {
+  return R"(
+[[validation.curves]]
+probe = "column_height"
+reference = "ref.csv"
+reference_x = "t"
+reference_y = "height"
+value_scale = 0.05715
+)";
+}
+
 // A box [lo, hi]^D with every side open: no ghosts, no wall forces.
 template <int D>
 BoxWalls<D> open_box(double lo, double hi) {

@@ -54,6 +54,9 @@ TEST(ChildProcesses, AThrowOrASignalIsThatChildsAlone) {
   EXPECT_EQ(results[0].output, "no such thing");
   EXPECT_FALSE(results[1].exited);
   EXPECT_EQ(results[1].signal, SIGKILL);
+  // What validate and bench report of them (glibc's name of signal 9 is "Killed").
+  EXPECT_EQ(how_it_ended(results[0]), "exit status 1");
+  EXPECT_EQ(how_it_ended(results[1]), "killed by signal 9 (Killed), out of memory?");
   EXPECT_EQ(results[2].output, "fine");
   EXPECT_EQ(results[2].exit_code, 0);
 }

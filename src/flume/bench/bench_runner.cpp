@@ -119,11 +119,10 @@ BenchResult run_bench_isolated(const BenchConfig& config, const CaseSpec& spec) 
     } catch (const nlohmann::json::exception& e) {
       r.error = fmt::format("unreadable result from the benchmark process: {}", e.what());
     }
-  } else if (child.exited) {
-    r.error = child.output.empty() ? fmt::format("exit status {}", child.exit_code) : child.output;
+  } else if (child.exited && !child.output.empty()) {
+    r.error = child.output;
   } else {
-    r.error = fmt::format("killed by signal {} ({}){}", child.signal, strsignal(child.signal),
-                          child.signal == 9 ? ", out of memory?" : "");
+    r.error = how_it_ended(child);
   }
   if (!r.error.empty()) {
     r.preset = config.preset;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -101,6 +102,12 @@ void reap(pid_t pid, ChildResult& result) {
 }
 
 }  // namespace
+
+std::string how_it_ended(const ChildResult& child) {
+  if (child.exited) return fmt::format("exit status {}", child.exit_code);
+  return fmt::format("killed by signal {} ({}){}", child.signal, strsignal(child.signal),
+                     child.signal == SIGKILL ? ", out of memory?" : "");
+}
 
 ChildResult run_in_child(const std::function<std::string()>& body) {
   return run_in_children({body}, 1).front();

@@ -29,6 +29,10 @@ struct ChildResult {
 // the fork cannot be created.
 ChildResult run_in_child(const std::function<std::string()>& body);
 
+// How a child that did not exit with status 0 ended: "exit status N", or "killed by signal N
+// (name)", with ", out of memory?" for SIGKILL (what the kernel's OOM killer sends).
+std::string how_it_ended(const ChildResult& child);
+
 // Each body in a child of its own as run_in_child, up to `jobs` children at a time (started in
 // order, each as soon as one before it ends); the results in the order of the bodies.
 std::vector<ChildResult> run_in_children(const std::vector<std::function<std::string()>>& bodies,

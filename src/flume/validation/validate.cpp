@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -464,10 +463,7 @@ CaseOutcome case_outcome(const std::string& name, const ValidateOptions& opt) {
 // A case whose process died (a crash, or killed for memory): a failed run row and a section
 // that says so.
 CaseOutcome died(const std::string& name, const ChildResult& child) {
-  const std::string why = child.exited ? fmt::format("exit status {}", child.exit_code)
-                                       : fmt::format("killed by signal {} ({}){}", child.signal,
-                                                     strsignal(child.signal),
-                                                     child.signal == 9 ? ", out of memory?" : "");
+  const std::string why = how_it_ended(child);
   CaseOutcome o;
   o.rows.push_back({{"case", name},
                     {"metric", "run"},
