@@ -315,10 +315,12 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
 // layer, so neighbouring slabs cannot run at the same time; and for results that do not depend
 // on the thread count every accumulator must receive its terms in one order: the even slabs'
 // before the odd slabs' (the order of a single thread doing all even slabs, then all odd ones).
-// An odd slab therefore starts once its two even neighbours are done; the even slabs never
-// touch each other. The slabs go out in slab_in_order's order and a thread that takes an odd
-// slab waits for its neighbours' flags: no barrier between the even and the odd slabs, at which
-// a thread idled until the other finished its last even slab (up to one slab per sweep).
+// Each thread takes the slabs of its share of the particles (slabs_of_thread): first its even
+// slabs upwards, then its odd slabs downwards, each odd slab once both its even neighbours are
+// done. A thread that has finished its share then takes the odd slabs that another has not
+// reached, from the bottom of that share up (each odd slab is claimed once: flags), so that
+// the threads end together when one share costs more (the floor's ghosts) or one core is
+// slower. The even slabs never wait, so no thread waits for ever.
 template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, class OwnTuple,
           std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
@@ -328,27 +330,44 @@ void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& 
   const std::size_t layer = grid.strides()[D - 1];
   const auto layers = static_cast<std::size_t>(grid.dims()[D - 1]);
   const long slabs = slab_count(grid);
-  // The even slabs' lead: twice the threads, so that an odd slab's later neighbour went out
-  // about as many slabs before it as there are threads at work.
-  const long lead = 2 + 2 * static_cast<long>(omp_get_num_threads());
-  auto done = [&](long s) { return std::atomic_ref<int>(flags[1 + s].v); };
+  auto first_cell = [&](long s) { return static_cast<std::size_t>(s) * kSlabLayers * layer; };
+  auto done = [&](long s) { return std::atomic_ref<int>(flags[2 * s].v); };
+  // claim(s) is true for the one thread that takes odd slab s.
+  auto claim = [&](long s) {
+    return std::atomic_ref<int>(flags[2 * s + 1].v).exchange(1, std::memory_order_relaxed) == 0;
+  };
+  const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+  const auto me = static_cast<std::size_t>(omp_get_thread_num());
+  auto share = [&](std::size_t t) {
+    return slabs_of_thread(slabs, ps.n_real, t, threads, [&](long s) {
+      return static_cast<std::size_t>(grid.real_begin(first_cell(s)));
+    });
+  };
+  const auto [first, last] = share(me);
   // Per thread: i's shares of the pairs of a block, and their partial sums.
   std::tuple<Shares<std::tuple_element_t<I, Accs>>...> shares;
-  std::atomic_ref<int> next(flags[0].v);
-  for (;;) {
-    const long k = next.fetch_add(1, std::memory_order_relaxed);
-    if (k >= slabs) break;
-    const long s = slab_in_order(k, slabs, lead);
-    if (s % 2 == 1) {
-      for (const long e : {s - 1, s + 1})
-        if (e < slabs) wait_done(done(e));
-    }
-    const std::size_t c_begin = static_cast<std::size_t>(s) * kSlabLayers * layer;
+  auto run = [&](long s) {
     const std::size_t c_end =
         std::min(static_cast<std::size_t>(s + 1) * kSlabLayers, layers) * layer;
-    slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, c_begin, c_end,
-                                    seq);
+    slab_pairs<D, Kernel, UniformH>(grid, ps, ctx.uniform_h, eqs, acc, own, shares, first_cell(s),
+                                    c_end, seq);
+  };
+  auto run_odd = [&](long s) {
+    wait_done(done(s - 1));
+    if (s + 1 < slabs) wait_done(done(s + 1));
+    run(s);
+  };
+  for (long s = first + first % 2; s < last; s += 2) {
+    run(s);
     mark_done(done(s));
+  }
+  for (long s = last - 1; s >= first; --s)
+    if (s % 2 == 1 && claim(s)) run_odd(s);
+  // Then the odd slabs that the other threads have not reached, from the bottom of each share.
+  for (std::size_t k = 1; k < threads; ++k) {
+    const auto [vf, vl] = share((me + k) % threads);
+    for (long s = vf + 1 - vf % 2; s < vl; s += 2)
+      if (claim(s)) run_odd(s);
   }
 #pragma omp barrier
 }
@@ -389,7 +408,7 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
   const auto n_all = static_cast<long>(ps.size());
   double least = std::numeric_limits<double>::infinity();
   auto& flags =
-      ctx.work.template buffer<SlabFlag>(0, static_cast<std::size_t>(slab_count(ctx.grid)) + 1);
+      ctx.work.template buffer<SlabFlag>(0, 2 * static_cast<std::size_t>(slab_count(ctx.grid)));
   std::fill(flags.begin(), flags.end(), SlabFlag{0});
 #pragma omp parallel
   {
