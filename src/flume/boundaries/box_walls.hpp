@@ -228,12 +228,33 @@ struct BoxWalls {
     }
   }
 
+  // Whether a particle of [b, e) stands beyond the wall on `Side` of axis K: what put_back_at
+  // acts on (a periodic side: any particle beyond it; a wall: within range beyond it).
+  template <int K, int Side>
+  bool any_across(const ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
+    const double at = wall(K, Side);
+    const double reach =
+        acts_as(K, Side) == WallKind::periodic ? std::numeric_limits<double>::infinity() : range;
+    const Vec<D>* __restrict x = ps.x.data();
+    bool any = false;
+#pragma omp simd reduction(| : any)
+    for (std::size_t i = b; i < e; ++i) {
+      const double depth = Side == 0 ? at - x[i][K] : x[i][K] - at;
+      any = any | ((depth > 0.0) & (depth <= reach));
+    }
+    return any;
+  }
+
   // put_back across the wall on `Side` of axis K (compile-time, so that the particle loop
   // indexes fixed components and vectorises).
   template <int K, int Side>
   void put_back_at(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
     const WallKind w = acts_as(K, Side);
     if (w == WallKind::open) return;
+    // The block is rewritten only when one of its particles has crossed this wall (a few
+    // blocks a step): a read-only scan of x first, where the masked loops below read and write
+    // x, v and v_half for every particle.
+    if (!any_across<K, Side>(ps, b, e, range)) return;
     if (w == WallKind::periodic) {
       // Re-injection (W 6.1): out of one end, in at the other, r + (x_i - l).
       const double at = wall(K, Side), length = hi[K] - lo[K];
