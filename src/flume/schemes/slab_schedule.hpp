@@ -23,10 +23,11 @@ long slab_count(const CellGrid<D>& grid) {
 // thread's share of the real particles, [t n / threads, (t + 1) n / threads) (slab_begin(s):
 // the index of slab s's first particle, non-decreasing in s). The per-particle passes give
 // each thread about the same share (OpenMP's static schedule, particle_passes.hpp), so a
-// particle's fields are written by one core from one pass to the next; with the slabs handed
-// out in turn (as before), half of them were written on the other core, and each such line
-// had to be taken from its cache: when the virtual machine's two cores did not share a cache,
-// the step ran about 35 % slower (the integration 5 x, the neighbour search 2 x).
+// particle's fields are written by one core from one pass to the next. With the slabs handed
+// out in turn (as before), half of them were written on the other core, each such line taken
+// from its cache: in this machine's slow spells (its two virtual cores, it seems, then not
+// sharing a cache) a `standard` step at 1e5 took 1.0 s per 100 steps against 0.73 (the
+// integration pass 5 x slower, the neighbour search 2 x); with the shares, 0.75-0.80.
 template <class SlabBegin>
 std::pair<long, long> slabs_of_thread(long slabs, std::size_t n, std::size_t t, std::size_t threads,
                                       const SlabBegin& slab_begin) {

@@ -319,8 +319,9 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
 // slabs upwards, then its odd slabs downwards, each odd slab once both its even neighbours are
 // done. A thread that has finished its share then takes the odd slabs that another has not
 // reached, from the bottom of that share up (each odd slab is claimed once: flags), so that
-// the threads end together when one share costs more (the floor's ghosts) or one core is
-// slower. The even slabs never wait, so no thread waits for ever.
+// the threads end together when one share costs more (the lower half of the bench's dam break
+// about 10 %, flume_bench) or one core is slower. The even slabs never wait, so no thread
+// waits for ever.
 template <int D, class Kernel, bool UniformH, class EqTuple, class AccTuple, class OwnTuple,
           std::size_t... I>
 void sweep_pairs(const SweepContext<D>& ctx, const ParticleSet<D>& ps, EqTuple& eqs, AccTuple& acc,
