@@ -62,6 +62,23 @@ TEST(TaitEos, WholeExponentPowerMatchesPow) {
   EXPECT_EQ(water(1.0).power(1.2345), 1.2345);
 }
 
+// The block pass (the density sweep's equation of state) gives each particle exactly the
+// values of pressure(rho) and sound_speed(rho, p): the same operations, vectorised or not.
+TEST(TaitEos, BlockPassGivesThePerParticleValues) {
+  const std::vector<double> rho{950.0, 999.0, 1000.0, 1000.5, 1013.0, 1070.0, 1100.0};
+  for (const double gamma : {7.0, 1.4}) {  // the whole-exponent loop, and the pow path
+    const TaitEos e = water(gamma);
+    std::vector<double> p(rho.size(), -1.0), c(rho.size(), -1.0);
+    e.pressure_and_sound_speed(rho.data(), p.data(), c.data(), 1, rho.size());
+    EXPECT_EQ(p[0], -1.0);  // before the block: untouched
+    EXPECT_EQ(c[0], -1.0);
+    for (std::size_t i = 1; i < rho.size(); ++i) {
+      EXPECT_EQ(p[i], e.pressure(rho[i])) << "gamma " << gamma << " rho " << rho[i];
+      EXPECT_EQ(c[i], e.sound_speed(rho[i], e.pressure(rho[i]))) << "gamma " << gamma;
+    }
+  }
+}
+
 TEST(TaitEos, ReferenceSoundSpeed) {
   const TaitEos e = water();
   // sqrt(gamma kappa / rho0) = c0 = 20: a few ulp (pow(1, 6) = 1 exactly, one sqrt and the

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 
 namespace flume {
 
@@ -17,18 +18,39 @@ struct TaitEos {
   // a^gamma. A whole gamma (7 for water) by repeated squaring, a few products, where a pow call
   // took 7 % of a `standard` step (flume bench, 1e5 particles); the two differ by round-off.
   double power(double a) const {
-    if (gamma >= 1.0 && gamma < 128.0 && gamma == std::floor(gamma)) {
-      // A fixed count of steps without a branch (a factor 1 is exact), so that the pass over
-      // the particles vectorises: a^(bit 0) a^(2 bit 1) a^(4 bit 2) ...
-      const auto n = static_cast<unsigned>(gamma);
-      double result = 1.0, square = a;
-      for (unsigned k = 0; k < 7; ++k) {
-        result *= ((n >> k) & 1u) != 0 ? square : 1.0;
-        square *= square;
-      }
-      return result;
+    return whole_gamma() ? whole_power(a, static_cast<unsigned>(gamma)) : std::pow(a, gamma);
+  }
+  bool whole_gamma() const { return gamma >= 1.0 && gamma < 128.0 && gamma == std::floor(gamma); }
+  // a^n for a whole n < 128: a fixed count of steps without a branch (a factor 1 is exact), so
+  // that a pass over the particles vectorises: a^(bit 0) a^(2 bit 1) a^(4 bit 2) ...
+  static double whole_power(double a, unsigned n) {
+    double result = 1.0, square = a;
+    for (unsigned k = 0; k < 7; ++k) {
+      result *= ((n >> k) & 1u) != 0 ? square : 1.0;
+      square *= square;
     }
-    return std::pow(a, gamma);
+    return result;
+  }
+
+  // p and c of the particles [b, e), the values of pressure(rho) and sound_speed(rho, p). The
+  // test on gamma is taken once for the block, so that the loop vectorises: taken per particle
+  // (in power) it kept the density's pass scalar, 3.2 % of a `standard` step (perf, 1e5).
+  void pressure_and_sound_speed(const double* rho, double* p, double* c, std::size_t b,
+                                std::size_t e) const {
+    if (!whole_gamma()) {
+      for (std::size_t i = b; i < e; ++i) {
+        p[i] = pressure(rho[i]);
+        c[i] = sound_speed(rho[i], p[i]);
+      }
+      return;
+    }
+    const auto n = static_cast<unsigned>(gamma);
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) {
+      const double pi = kappa * (whole_power(rho[i] / rho0, n) - 1.0);
+      p[i] = pi;
+      c[i] = sound_speed(rho[i], pi);
+    }
   }
 
   // c = sqrt(dp/drho) = c0 (rho/rho0)^((gamma-1)/2); BL (63) uses the reference value c0.
@@ -37,8 +59,12 @@ struct TaitEos {
   }
   // The same c from a pressure already computed, without a pow: since p + kappa =
   // kappa (rho/rho0)^gamma, dp/drho = gamma (p + kappa) / rho. For the pair loops.
-  double sound_speed(double rho, double p) const { return std::sqrt(gamma * (p + kappa) / rho); }
-  double reference_sound_speed() const { return std::sqrt(gamma * kappa / rho0); }
+  double sound_speed(double rho, double p) const {
+    return std::sqrt(gamma * (p + kappa) / rho);
+  }
+  double reference_sound_speed() const {
+    return std::sqrt(gamma * kappa / rho0);
+  }
 
   // Stored elastic energy per unit mass, e(rho) = int_{rho0}^{rho} p / rho'^2 drho', the U of
   // BL (10)-(11) for this fluid: what the internal_energy diagnostic sums, so that kinetic +
@@ -51,7 +77,9 @@ struct TaitEos {
   }
 
   // The density at pressure p, the inverse of BL (60): rho0 (1 + p / kappa)^(1 / gamma).
-  double density_at(double p) const { return rho0 * std::pow(1.0 + p / kappa, 1.0 / gamma); }
+  double density_at(double p) const {
+    return rho0 * std::pow(1.0 + p / kappa, 1.0 / gamma);
+  }
 
   // Density of still water at depth d below a free surface at p = 0: the column integrated,
   // dp/dd = rho(p) g with this EOS, whose solution is

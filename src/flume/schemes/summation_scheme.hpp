@@ -12,6 +12,8 @@
 //   4. sweep: a_a = g + pressure force + viscous + artificial viscosity
 #pragma once
 
+#include <limits>
+
 #include "flume/equations/density_summation.hpp"
 #include "flume/equations/density_summation_first_order_bl47.hpp"
 #include "flume/equations/density_summation_shepard_bl53.hpp"
@@ -41,9 +43,9 @@ class SummationScheme final : public Scheme<D> {
     const TaitEos tait = phys_.eos.tait();
     sweep_then<D, Kernel>(
         ctx, ps, "density",
-        [&](std::size_t i) {
-          ps.p[i] = tait.pressure(ps.rho[i]);
-          ps.c[i] = tait.sound_speed(ps.rho[i], ps.p[i]);
+        [&](std::size_t b, std::size_t e) {
+          tait.pressure_and_sound_speed(ps.rho.data(), ps.p.data(), ps.c.data(), b, e);
+          return std::numeric_limits<double>::infinity();  // no limit to take (sweep_then)
         },
         density);
     halo.update_density(ps);

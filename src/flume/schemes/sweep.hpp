@@ -476,7 +476,9 @@ void sweep(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char* nam
 // As sweep, then then(i) for each real particle i in the same pass as the equations' finish:
 // a per-particle step that needs the sweep's result (the equation of state after the summation
 // density) without a pass of its own over the particles (each such pass reads and writes
-// memory: at 1e5 particles the state does not stay in cache between passes).
+// memory: at 1e5 particles the state does not stay in cache between passes). Or then(b, e)
+// after the finish of each block of particles, as sweep_least (its number is not used): a loop
+// of its own that the compiler vectorises.
 template <int D, class Kernel, class Then, class... Eqs>
 void sweep_then(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char* name,
                 const Then& then, Eqs&... eqs) {
