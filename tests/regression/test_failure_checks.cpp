@@ -68,6 +68,15 @@ TEST_F(FailureChecks, AStepBelowTheFloorNamesTheFastestParticle) {
   EXPECT_NE(error.find("largest acceleration"), std::string::npos) << error;
 }
 
+TEST_F(FailureChecks, AParticleFallingThroughAnOpenFloorIsLost) {
+  // The floor open: the bottom row falls below y = 0 within about 0.03 s. With `standard` the
+  // checks ride in the leap-frog's kick-and-drift pass (the schemes that evolve the density,
+  // as the tests above, in the pass that advances it).
+  const auto error =
+      failed_run("--set boundaries.y_min=open --set scheme.preset=standard", "inside");
+  EXPECT_NE(error.find("left the domain (particle lost)"), std::string::npos) << error;
+}
+
 // At the level of the simulation: a state restored with a NaN, or with densities outside the
 // band, is refused by the same checks, naming the particle (the worst of the band's offenders:
 // the largest factor outside it, here 3 against 1.5).

@@ -236,13 +236,13 @@ struct BoxWalls {
     const double reach =
         acts_as(K, Side) == WallKind::periodic ? std::numeric_limits<double>::infinity() : range;
     const Vec<D>* __restrict x = ps.x.data();
-    bool any = false;
+    int any = 0;  // an int: GCC 12 left an | of bools scalar
 #pragma omp simd reduction(| : any)
     for (std::size_t i = b; i < e; ++i) {
       const double depth = Side == 0 ? at - x[i][K] : x[i][K] - at;
-      any = any | ((depth > 0.0) & (depth <= reach));
+      any |= (depth > 0.0) & (depth <= reach) ? 1 : 0;
     }
-    return any;
+    return any != 0;
   }
 
   // put_back across the wall on `Side` of axis K (compile-time, so that the particle loop

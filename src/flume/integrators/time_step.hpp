@@ -51,8 +51,12 @@ struct StepLimit {
   // The optional fields the rule reads (ParticleSet::use_only).
   unsigned fields() const { return rule == StepRule::w388 ? kFieldSignal : 0u; }
 
-  // min dt_a over the particles [b, e), s (+infinity if none).
-  double least(const ParticleSet<D>& ps, std::size_t b, std::size_t e) const {
+  // min dt_a over the particles [b, e), s (+infinity if none). uniform_h > 0 says that every
+  // particle has that smoothing length (SweepContext::uniform_h).
+  double least(const ParticleSet<D>& ps, std::size_t b, std::size_t e,
+               double uniform_h = 0.0) const {
+    if (uniform_h > 0.0 && rule == StepRule::bl63 && !eddy && c0 != 0.0)
+      return least_uniform(ps, b, e, uniform_h);
     if (rule == StepRule::w388)
       return eddy ? least_of<true, true>(ps, b, e) : least_of<true, false>(ps, b, e);
     return eddy ? least_of<false, true>(ps, b, e) : least_of<false, false>(ps, b, e);
@@ -91,6 +95,27 @@ struct StepLimit {
       dt = std::min(dt, std::min(std::min(acoustic, body), viscous));
     }
     return dt;
+  }
+
+  // BL (63)'s rule with one h and the reference c: dt_a falls as |v_a| and |a_a| grow, and
+  // sqrt is monotone, so min_a dt_a is dt_a at the largest |v_a|^2 and |a_a|^2 (each term
+  // rounded as least_of rounds it: the same bits). Two maxima per particle instead of three
+  // square roots and three divisions (1.1 % of a `standard` step at 1e5, perf).
+  double least_uniform(const ParticleSet<D>& ps, std::size_t b, std::size_t e, double h) const {
+    if (b >= e) return std::numeric_limits<double>::infinity();
+    const Vec<D>* __restrict v = ps.v.data();
+    const Vec<D>* __restrict acc = ps.a.data();
+    double v2 = 0.0, a2 = 0.0;
+    const auto n = static_cast<long>(e);
+#pragma omp simd reduction(max : v2, a2)
+    for (auto a = static_cast<long>(b); a < n; ++a) {
+      v2 = std::max(v2, norm2(v[a]));
+      a2 = std::max(a2, norm2(acc[a]));
+    }
+    const double acoustic = cfl * (h / (c0 + std::sqrt(v2)));
+    const double body = 0.25 * std::sqrt(h / std::sqrt(a2));
+    const double viscous = 0.125 * h * h * rho0 / mu;
+    return std::min(std::min(acoustic, body), viscous);
   }
 };
 

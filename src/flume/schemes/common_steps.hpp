@@ -27,7 +27,8 @@ namespace flume {
 // p and c for the real particles, then copied to the ghosts (hydrostatic ghosts add the
 // column across the wall, halo.hpp): Tait p(rho_a), BL (60), or the ideal gas p(rho_a, e_a);
 // c_a the local sound speed. One loop per equation of state, each
-// without a branch, so that it vectorises.
+// without a branch, so that it vectorises (the liquid's in blocks: TaitEos takes its test on
+// gamma once a block).
 template <int D>
 void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& halo) {
   if (phys.eos.is_gas()) {
@@ -38,9 +39,8 @@ void update_pressure(ParticleSet<D>& ps, const Physics<D>& phys, const Halo<D>& 
     });
   } else {
     const TaitEos tait = phys.eos.tait();
-    for_each_real(ps.n_real, [&](std::size_t i) {
-      ps.p[i] = tait.pressure(ps.rho[i]);
-      ps.c[i] = tait.sound_speed(ps.rho[i], ps.p[i]);
+    for_each_block(ps.n_real, [&](std::size_t b, std::size_t e) {
+      tait.pressure_and_sound_speed(ps.rho.data(), ps.p.data(), ps.c.data(), b, e);
     });
   }
   halo.update_pressure(ps);
@@ -146,7 +146,8 @@ double accelerate(const SweepContext<D>& ctx, ParticleSet<D>& ps, const Physics<
   auto run = [&](const auto&... terms) {
     AccelerationSum<D, std::remove_cvref_t<decltype(terms)>...> sum{ps, phys.gravity, terms...};
     return sweep_least<D, Kernel>(
-        ctx, ps, "force", [&](std::size_t b, std::size_t e) { return limit.least(ps, b, e); }, sum);
+        ctx, ps, "force",
+        [&](std::size_t b, std::size_t e) { return limit.least(ps, b, e, ctx.uniform_h); }, sum);
   };
   if (phys.morris_term()) {
     if (stress) return run(forces..., viscous, morris, artificial);

@@ -37,4 +37,13 @@ T least_over_blocks(std::size_t n_real, T init, F&& f) {
   return least;
 }
 
+// f(b, e) for each block of the real particles, as least_over_blocks shares them out.
+template <class F>
+void for_each_block(std::size_t n_real, F&& f) {
+  least_over_blocks(n_real, 0, [&](std::size_t b, std::size_t e) {
+    f(b, e);
+    return 0;
+  });
+}
+
 }  // namespace flume

@@ -12,8 +12,6 @@
 //   4. sweep: a_a = g + pressure force + viscous + artificial viscosity
 #pragma once
 
-#include <limits>
-
 #include "flume/equations/density_summation.hpp"
 #include "flume/equations/density_summation_first_order_bl47.hpp"
 #include "flume/equations/density_summation_shepard_bl53.hpp"
@@ -45,7 +43,6 @@ class SummationScheme final : public Scheme<D> {
         ctx, ps, "density",
         [&](std::size_t b, std::size_t e) {
           tait.pressure_and_sound_speed(ps.rho.data(), ps.p.data(), ps.c.data(), b, e);
-          return std::numeric_limits<double>::infinity();  // no limit to take (sweep_then)
         },
         density);
     halo.update_density(ps);

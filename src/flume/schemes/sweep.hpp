@@ -394,8 +394,8 @@ AccStore<Acc> acc_store(SweepWorkspace& work, std::size_t slot, std::size_t n) {
 }
 
 // Runs the group; then(i) follows the equations' finish of each real particle i. Or, when
-// then takes a block of particles [b, e) and returns a number, then(b, e) follows the finish of
-// each block and the group returns the least of those numbers (else +infinity).
+// then takes a block of particles [b, e), then(b, e) follows the finish of each block, and
+// when it returns a number the group returns the least of those numbers (else +infinity).
 template <int D, class Kernel, class Then, class... Eqs, std::size_t... I>
 double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const Then& then,
                    std::index_sequence<I...> seq, Eqs&... eqs) {
@@ -455,8 +455,11 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
         const long b = bb * kBlock, e = std::min(nn, b + kBlock);
         for (long ii = b; ii < e; ++ii)
           finish(static_cast<std::size_t>(ii));
-        least = std::min(least, static_cast<double>(then(static_cast<std::size_t>(b),
-                                                         static_cast<std::size_t>(e))));
+        const auto bs = static_cast<std::size_t>(b), es = static_cast<std::size_t>(e);
+        if constexpr (std::is_void_v<std::invoke_result_t<const Then&, std::size_t, std::size_t>>)
+          then(bs, es);
+        else
+          least = std::min(least, static_cast<double>(then(bs, es)));
       }
     }
   }
@@ -477,8 +480,8 @@ void sweep(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char* nam
 // a per-particle step that needs the sweep's result (the equation of state after the summation
 // density) without a pass of its own over the particles (each such pass reads and writes
 // memory: at 1e5 particles the state does not stay in cache between passes). Or then(b, e)
-// after the finish of each block of particles, as sweep_least (its number is not used): a loop
-// of its own that the compiler vectorises.
+// after the finish of each block of particles, as sweep_least: a loop of its own that the
+// compiler vectorises.
 template <int D, class Kernel, class Then, class... Eqs>
 void sweep_then(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const char* name,
                 const Then& then, Eqs&... eqs) {

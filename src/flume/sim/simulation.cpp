@@ -1,6 +1,7 @@
 #include "flume/sim/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <type_traits>
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "flume/core/error.hpp"
 #include "flume/integrators/time_step.hpp"
@@ -155,8 +157,9 @@ double Simulation<D>::accelerations(const SweepContext<D>& ctx) {
   PhaseClock::Scope phase(&clock_, "boundaries");
   repulsive_.add_accelerations(ps_);
   // The force sweep's step saw the scheme's accelerations only: taken again with the walls'.
-  return least_over_blocks(ps_.n_real, std::numeric_limits<double>::infinity(),
-                           [&](std::size_t b, std::size_t e) { return limit_.least(ps_, b, e); });
+  return least_over_blocks(
+      ps_.n_real, std::numeric_limits<double>::infinity(),
+      [&](std::size_t b, std::size_t e) { return limit_.least(ps_, b, e, uniform_h_); });
 }
 
 template <int D>
@@ -204,31 +207,29 @@ void Simulation<D>::step_leap_frog(double max_dt) {
   std::optional<PhaseClock::Scope> phase;
   phase.emplace(&clock_, "integration");
   const double dt = choose_step(dt_stable, max_dt);
-  // The drift moves the particles to t^{n+1}; in the same pass each is put back across the
-  // walls (standing where they are at t^{n+1}). The checks follow in a pass of their own (its
-  // cost is a phase of flume bench): the first bad particle is reported.
+  // The drift moves the particles to t^{n+1}; in the same pass each block is put back across
+  // the walls (standing where they are at t^{n+1}) and checked (pass_with_checks): the first
+  // bad particle is reported.
   walls_at(time_ + dt);
   const long none = static_cast<long>(ps_.n_real);
-  auto put_back = [&](std::size_t b, std::size_t e) {
-    walls_.put_back(ps_, b, e, range);
-    repulsive_.put_back(ps_, b, e);
-    return none;
-  };
   const EvolvedFields state = evolved();
   const bool xsph = config_.xsph > 0.0;
+  long bad = none;
   if (state.density || state.energy || state.smoothing_length || xsph) {
     // The state's rates and XSPH's drift correction take the kicked velocity v^{n+1/2}.
     integrator_.kick(ps_, dt);
     phase.reset();
     scheme_->compute_state_rates(ps_, ctx, halo_, ps_.v_half);
     const std::vector<Vec<D>>* drift = xsph_of(ctx, ps_.v_half);
-    phase.emplace(&clock_, "integration");
-    integrator_.advance_state_and_drift(ps_, dt, state, none, put_back, drift);
+    bad = pass_with_checks(range, [&](const auto& after) {
+      return integrator_.advance_state_and_drift(ps_, dt, state, none, after, drift);
+    });
   } else {
-    integrator_.kick_and_drift(ps_, dt, none, put_back);
+    phase.reset();
+    bad = pass_with_checks(
+        range, [&](const auto& after) { return integrator_.kick_and_drift(ps_, dt, none, after); });
   }
-  phase.reset();
-  finish_step(dt, checked());
+  finish_step(dt, bad);
 }
 
 // W (3.85)-(3.87) or W (3.92) (runge_kutta.hpp): the rates at Phi^n, a stage, the rates at
@@ -251,11 +252,6 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
     const bool stage_of_modified = !stable && kind == RungeKuttaKind::modified;
     return xsph_of(ctx, stage_of_modified ? ps_.v_half : ps_.v);
   };
-  auto put_back = [&](std::size_t b, std::size_t e) {
-    walls_.put_back(ps_, b, e, range);
-    repulsive_.put_back(ps_, b, e);
-    return none;
-  };
 
   double dt_stable = 0.0;
   const std::vector<Vec<D>>* drift = rates(&dt_stable);
@@ -264,22 +260,22 @@ void Simulation<D>::step_runge_kutta(double max_dt, RungeKuttaKind kind) {
   const double dt = choose_step(dt_stable, max_dt);
   // The stage state stands at t + dt/2 (W (3.85); W (3.92)'s Phi^{n+1/2}).
   walls_at(time_ + 0.5 * dt);
-  rk.to_stage(ps_, dt, none, put_back, drift);
-  ps_.drop_ghosts();
   phase.reset();
-  const long bad = checked();
+  const long bad = pass_with_checks(
+      range, [&](const auto& after) { return rk.to_stage(ps_, dt, none, after, drift); });
+  ps_.drop_ghosts();
   if (bad < none) {
     finish_step(0.5 * dt, bad);  // reports the particle, at the stage's time
     return;
   }
-  phase.reset();
   range = neighbours_at(time_ + 0.5 * dt);
   drift = rates(nullptr);
   phase.emplace(&clock_, "integration");
   walls_at(time_ + dt);
-  rk.to_end(ps_, dt, none, put_back, drift);
   phase.reset();
-  finish_step(dt, checked());
+  finish_step(dt, pass_with_checks(range, [&](const auto& after) {
+                return rk.to_end(ps_, dt, none, after, drift);
+              }));
 }
 
 template <int D>
@@ -309,9 +305,31 @@ long Simulation<D>::first_unsound_of_all() const {
 }
 
 template <int D>
-long Simulation<D>::checked() {
-  PhaseClock::Scope phase(&clock_, "checks");
-  return first_unsound_of_all();
+long Simulation<D>::put_back_and_check(std::size_t b, std::size_t e, double range) {
+  walls_.put_back(ps_, b, e, range);
+  repulsive_.put_back(ps_, b, e);
+  const auto start = PhaseClock::Clock::now();
+  const long bad = first_unsound(b, e);
+  check_seconds_[static_cast<std::size_t>(omp_get_thread_num())].s +=
+      std::chrono::duration<double>(PhaseClock::Clock::now() - start).count();
+  return bad;
+}
+
+template <int D>
+template <class Pass>
+long Simulation<D>::pass_with_checks(double range, const Pass& pass) {
+  check_seconds_.assign(static_cast<std::size_t>(omp_get_max_threads()), ThreadSeconds{});
+  const auto start = PhaseClock::Clock::now();
+  const long bad =
+      pass([&](std::size_t b, std::size_t e) { return put_back_and_check(b, e, range); });
+  const double whole = std::chrono::duration<double>(PhaseClock::Clock::now() - start).count();
+  double checks = 0.0;
+  for (const ThreadSeconds& t : check_seconds_)
+    checks += t.s;
+  checks /= static_cast<double>(check_seconds_.size());
+  clock_.add("integration", whole - checks);
+  clock_.add("checks", checks);
+  return bad;
 }
 
 template <int D>
