@@ -173,9 +173,24 @@ struct BoxWalls {
   // Whether particle i is inside the box (a NaN position is not). Walls are impermeable and
   // open sides let particles leave the domain: either way a particle outside is lost to the run.
   [[gnu::always_inline]] bool inside(const ParticleSet<D>& ps, std::size_t i) const {
+    Vec<D> at_lo, at_hi;
+    places(at_lo, at_hi);
+    return inside(ps.x[i], at_lo, at_hi);
+  }
+  // The walls' places now, lower and upper on each axis: taken once before a loop over the
+  // particles that tests inside(x, lo, hi) (read in the loop through wall(), with its test on
+  // a moving wall, they kept the simulation's checks scalar).
+  void places(Vec<D>& at_lo, Vec<D>& at_hi) const {
+    for (int k = 0; k < D; ++k) {
+      at_lo[k] = wall(k, 0);
+      at_hi[k] = wall(k, 1);
+    }
+  }
+  [[gnu::always_inline]] static bool inside(const Vec<D>& x, const Vec<D>& at_lo,
+                                            const Vec<D>& at_hi) {
     bool in = true;
     for (int k = 0; k < D; ++k)
-      in = in & (ps.x[i][k] >= wall(k, 0)) & (ps.x[i][k] <= wall(k, 1));
+      in = in & (x[k] >= at_lo[k]) & (x[k] <= at_hi[k]);
     return in;
   }
   // Index of the first real particle outside the box, or -1.

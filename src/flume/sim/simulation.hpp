@@ -109,25 +109,20 @@ class Simulation {
   // The first of the real particles [b, e) that is not sound (a non-finite state, a density
   // outside the band, outside the box), or n_real if none: first whether any is, in a loop
   // without branches that the compiler vectorises, then, only in a block that holds one,
-  // which. (The walls' places are taken out of the loop: read in it through BoxWalls::wall,
-  // with its test on a moving wall, they kept the loop scalar, 2.6 % of a `standard` step at
-  // 1e5, perf.)
+  // which. (The walls' places are taken out of the loop, BoxWalls::places: read in it through
+  // BoxWalls::wall, they kept the loop scalar, 2.6 % of a `standard` step at 1e5, perf.)
   long first_unsound(std::size_t b, std::size_t e) const {
     // A gas's internal energy must stay finite too (else the density is checked twice).
     const double* energy = ps_.uses(kFieldEnergy) ? ps_.e.data() : ps_.rho.data();
     Vec<D> lo, hi;
-    for (int k = 0; k < D; ++k) {
-      lo[k] = walls_.wall(k, 0);
-      hi[k] = walls_.wall(k, 1);
-    }
+    walls_.places(lo, hi);
     const double rho_lo = rho_lo_, rho_hi = rho_hi_;
     auto sound = [&](std::size_t i) {
       const double rho = ps_.rho[i];
       bool ok = std::isfinite(rho) & (rho > rho_lo) & (rho < rho_hi) & std::isfinite(energy[i]);
       for (int k = 0; k < D; ++k)
-        ok = ok & std::isfinite(ps_.x[i][k]) & std::isfinite(ps_.v[i][k]) & (ps_.x[i][k] >= lo[k]) &
-             (ps_.x[i][k] <= hi[k]);
-      return ok;
+        ok = ok & std::isfinite(ps_.x[i][k]) & std::isfinite(ps_.v[i][k]);
+      return ok & BoxWalls<D>::inside(ps_.x[i], lo, hi);
     };
     int bad = 0;
 #pragma omp simd reduction(| : bad)
