@@ -230,6 +230,11 @@ statistic = "mean"
   second.replace(second.find("crest_width"), 11, "crest2_amplitude");
   test::expect_one_line_with(test::error_of(tank_toml(second)),
                              {"crest2_amplitude", "do not measure it"});
+  // crest2_fit_amplitude needs both.
+  std::string fit2 = width;
+  fit2.replace(fit2.find("crest_width"), 11, "crest2_fit_amplitude");
+  test::expect_one_line_with(test::error_of(tank_toml("crest_profile = true\n" + fit2)),
+                             {"crest2_fit_amplitude", "do not measure it"});
   std::string no_waves = tank_toml("crest_profile = true\n");
   no_waves.replace(no_waves.find("waves = true"), 12, "waves = false");
   test::expect_one_line_with(test::error_of(no_waves),

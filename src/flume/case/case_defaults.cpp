@@ -132,8 +132,11 @@ second_crest = 0.0     # m: also crest2_x, crest2_amplitude, the highest other c
 crest_profile = false  # crest_width (m: the least-squares lambda of A sech^2((x - crest_x) /
                        # lambda) against the surface within 3 KdV widths of the crest) and
                        # crest_shape (the RMS deviation there from KdV's profile of amplitude
-                       # crest_amplitude, W (6.15), over it; probes/crest_profile.hpp); needs
-                       # waves = true
+                       # crest_amplitude, W (6.15), over it; probes/crest_profile.hpp) and
+                       # crest_fit_amplitude (m: the amplitude of the least-squares
+                       # A' sech^2((x - crest_x) / lambda') there, A' and lambda' free: steadier
+                       # than crest_amplitude; with second_crest, crest2_fit_amplitude too);
+                       # needs waves = true
 still_depth = 0.0      # m, H of the tank; 0 = the first fluid block's top above domain.min
 still_water = false    # bed_pressure (Pa: the four bottom rows' p + rho0 g y, middle 80 % of
                        # the width) and water_level (m: twice the particles' mean height)

@@ -25,6 +25,7 @@ std::vector<std::string> probe_names(const CaseSpec& s) {
       "crest2_x",      "crest2_amplitude", "broken_x",          "incident_amplitude",
       "grilli_s0",     "grilli_breaks",    "crest_width",       "crest_shape",
       "crest_centre_x"};
+  names.insert(names.end(), {"crest_fit_amplitude", "crest2_fit_amplitude"});
   for (std::size_t g = 0; g < s.gauges.size(); ++g)
     names.push_back(fmt::format("gauge_{}", g + 1));
   return names;
@@ -259,12 +260,16 @@ void read_validation(const Reader& r, const toml::table& t, const std::filesyste
       const std::string key = fmt::format("validation.curves[{}]", c);
       CurveCheck cc;
       cc.probe = r.one_of(key + ".probe", probe_names(s));
+      // probes.crest_profile's columns (crest2_fit_amplitude also needs the second crest).
+      const bool profile_column = cc.probe == "crest_width" || cc.probe == "crest_shape" ||
+                                  cc.probe.ends_with("fit_amplitude");
       const bool enabled =
-          cc.probe == "surge_front"                                  ? s.surge_front
-          : cc.probe == "column_height"                              ? s.column_height
-          : cc.probe.starts_with("bore")                             ? s.bore
-          : cc.probe.starts_with("semi")                             ? s.semi_axes
-          : cc.probe == "crest_width" || cc.probe == "crest_shape"   ? s.crest_profile
+          cc.probe == "surge_front"      ? s.surge_front
+          : cc.probe == "column_height"  ? s.column_height
+          : cc.probe.starts_with("bore") ? s.bore
+          : cc.probe.starts_with("semi") ? s.semi_axes
+          : profile_column
+              ? s.crest_profile && (!cc.probe.starts_with("crest2") || s.second_crest > 0.0)
           : cc.probe.starts_with("crest2")                           ? s.second_crest > 0.0
           : cc.probe.starts_with("crest")                            ? s.waves
           : cc.probe.starts_with("gauge")                            ? s.waves

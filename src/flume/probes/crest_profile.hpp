@@ -9,7 +9,16 @@
 //   lambda_KdV(A));
 // - shape: the root mean square of (eta - H) - A sech^2(s / lambda_KdV(A)) over the offsets,
 //   divided by A: how far the measured profile is from KdV's profile of the same height (0 for
-//   a KdV wave; a sech^2 wave whose width is off by a small fraction f reads about 0.37 f).
+//   a KdV wave; a sech^2 wave whose width is off by a small fraction f reads about 0.37 f);
+// - fit_amplitude: the amplitude of the least-squares A' sech^2(s / lambda') with both A' and
+//   lambda' free (x_c as measured). A is one sample's height, parabola-refined: where the top
+//   of a wave is a few particles wide it scatters by a good part of a spacing's worth of
+//   particles from one reading to the next; the fit weighs every sample of the window, so it
+//   scatters much less (a wave's height after a collision against the same wave alone, W
+//   6.4.2, is a difference of about 1 %). For a given lambda' the best A' is linear least
+//   squares, A' = sum eta phi / sum phi^2 with phi = sech^2(s / lambda'), which leaves
+//   sum (eta - A' phi)^2 = sum eta^2 - (sum eta phi)^2 / sum phi^2 to minimise over lambda'
+//   alone (variable projection), by the same search as the width.
 // The window, +-3 lambda_KdV, holds the whole wave (sech^2(3) = 0.01) and little of what trails
 // it. The least squares are minimised by golden-section search on log lambda over
 // [lambda_KdV / 8, 8 lambda_KdV] (a fixed number of steps: the same result for the same
@@ -18,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "flume/probes/water_depth.hpp"
@@ -28,9 +38,35 @@ namespace flume {
 inline constexpr double kCrestWindow = 3.0;  // KdV widths either side of the crest
 
 struct CrestProfile {
-  double width = 0.0;  // m: least-squares lambda; 0 when there is no crest (A <= 0)
-  double shape = 0.0;  // RMS deviation from KdV's profile of amplitude A, over A
+  double width = 0.0;          // m: least-squares lambda; 0 when there is no crest (A <= 0)
+  double shape = 0.0;          // RMS deviation from KdV's profile of amplitude A, over A
+  double fit_amplitude = 0.0;  // m: A' of the least-squares A' sech^2(s / lambda'); 0: no crest
 };
+
+// The u in [lo, hi] that minimises f (unimodal there): golden-section search, a fixed number
+// of steps (80: the bracket shrinks to 1e-16 of its length), so the same f gives the same u.
+template <class F>
+double golden_minimum(const F& f, double lo, double hi) {
+  const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+  double u1 = hi - phi * (hi - lo), u2 = lo + phi * (hi - lo);
+  double f1 = f(u1), f2 = f(u2);
+  for (int it = 0; it < 80; ++it) {
+    if (f1 <= f2) {
+      hi = u2;
+      u2 = u1;
+      f2 = f1;
+      u1 = hi - phi * (hi - lo);
+      f1 = f(u1);
+    } else {
+      lo = u1;
+      u1 = u2;
+      f1 = f2;
+      u2 = lo + phi * (hi - lo);
+      f2 = f(u2);
+    }
+  }
+  return 0.5 * (lo + hi);
+}
 
 inline CrestProfile crest_profile(const DepthProfile& d, double still_depth, double crest_x,
                                   double amplitude) {
@@ -60,27 +96,29 @@ inline CrestProfile crest_profile(const DepthProfile& d, double still_depth, dou
   };
   const double n = static_cast<double>(s.size());
   out.shape = std::sqrt(misfit(kdv) / n) / amplitude;
-  // Golden section on u = log(lambda / kdv) in [-log 8, log 8].
-  const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
-  double lo = -std::log(8.0), hi = std::log(8.0);
-  double u1 = hi - phi * (hi - lo), u2 = lo + phi * (hi - lo);
-  double f1 = misfit(kdv * std::exp(u1)), f2 = misfit(kdv * std::exp(u2));
-  for (int it = 0; it < 80; ++it) {
-    if (f1 <= f2) {
-      hi = u2;
-      u2 = u1;
-      f2 = f1;
-      u1 = hi - phi * (hi - lo);
-      f1 = misfit(kdv * std::exp(u1));
-    } else {
-      lo = u1;
-      u1 = u2;
-      f1 = f2;
-      u2 = lo + phi * (hi - lo);
-      f2 = misfit(kdv * std::exp(u2));
+  // Both searches on u = log(lambda / kdv) in [-log 8, log 8].
+  const double span = std::log(8.0);
+  out.width = kdv * std::exp(golden_minimum([&](double u) { return misfit(kdv * std::exp(u)); },
+                                            -span, span));
+  // A' free: sums of eta phi and phi^2 at lambda'.
+  auto projected = [&](double lambda) {
+    double ep = 0.0, pp = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const double c = std::cosh(s[k] / lambda);
+      const double phi = 1.0 / (c * c);
+      ep += eta[k] * phi;
+      pp += phi * phi;
     }
-  }
-  out.width = kdv * std::exp(0.5 * (lo + hi));
+    return std::pair{ep, pp};
+  };
+  const double u = golden_minimum(
+      [&](double v) {
+        const auto [ep, pp] = projected(kdv * std::exp(v));
+        return -ep * ep / pp;  // sum (eta - A' phi)^2 less the constant sum eta^2
+      },
+      -span, span);
+  const auto [ep, pp] = projected(kdv * std::exp(u));
+  out.fit_amplitude = ep / pp;
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "flume/run/case_probes.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "flume/probes/bore.hpp"
 #include "flume/probes/column_height.hpp"
@@ -42,8 +43,10 @@ std::vector<std::string> CaseProbes<D>::columns() const {
   if (spec_.bore) cols.insert(cols.end(), {"bore_front", "bore_height"});
   if (spec_.waves) {
     cols.insert(cols.end(), {"crest_x", "crest_amplitude", "crest_centre_x"});
-    if (spec_.crest_profile) cols.insert(cols.end(), {"crest_width", "crest_shape"});
+    if (spec_.crest_profile)
+      cols.insert(cols.end(), {"crest_width", "crest_shape", "crest_fit_amplitude"});
     if (spec_.second_crest > 0.0) cols.insert(cols.end(), {"crest2_x", "crest2_amplitude"});
+    if (spec_.second_crest > 0.0 && spec_.crest_profile) cols.push_back("crest2_fit_amplitude");
     for (std::size_t g = 0; g < spec_.gauges.size(); ++g)
       cols.push_back("gauge_" + std::to_string(g + 1));
     if (spec_.beach_slope > 0.0)
@@ -104,9 +107,17 @@ std::vector<double> CaseProbes<D>::row(const Simulation<D>& sim) {
       row.insert(row.end(), {w.crest_x, w.crest_amplitude, w.crest_centre_x});
       if (spec_.crest_profile) {
         const auto c = crest_profile(depth, spec_.still_depth, w.crest_x, w.crest_amplitude);
-        row.insert(row.end(), {c.width, c.shape});
+        row.insert(row.end(), {c.width, c.shape, c.fit_amplitude});
       }
       if (spec_.second_crest > 0.0) row.insert(row.end(), {w.crest2_x, w.crest2_amplitude});
+      if (spec_.second_crest > 0.0 && spec_.crest_profile) {
+        // No second crest (NaN place): no fit either.
+        const bool found = std::isfinite(w.crest2_x);
+        row.push_back(found
+                          ? crest_profile(depth, spec_.still_depth, w.crest2_x, w.crest2_amplitude)
+                                .fit_amplitude
+                          : std::numeric_limits<double>::quiet_NaN());
+      }
       row.insert(row.end(), w.gauges.begin(), w.gauges.end());
       if (shoaling_) {
         const auto g = (*shoaling_)(w.crest_x, w.crest_amplitude);
