@@ -12,11 +12,10 @@
 //   a KdV wave; a sech^2 wave whose width is off by a small fraction f reads about 0.37 f);
 // - fit_amplitude: the amplitude of the least-squares A' sech^2(s / lambda') with both A' and
 //   lambda' free (x_c as measured). A is one sample's height, parabola-refined: where the top
-//   of a wave is a few particles wide it scatters by a good part of a spacing's worth of
-//   particles from one reading to the next; the fit weighs every sample of the window, so it
-//   scatters much less (a wave's height after a collision against the same wave alone, W
-//   6.4.2, is a difference of about 1 %). For a given lambda' the best A' is linear least
-//   squares, A' = sum eta phi / sum phi^2 with phi = sech^2(s / lambda'), which leaves
+//   of a wave is a few particles wide, those few particles move it; the fit weighs every sample
+//   of the window, so the wave's whole crest sets it (W 6.4.2's heights after a collision,
+//   against the same wave alone, differ by a few %). For a given lambda' the best A' is linear
+//   least squares, A' = sum eta phi / sum phi^2 with phi = sech^2(s / lambda'), which leaves
 //   sum (eta - A' phi)^2 = sum eta^2 - (sum eta phi)^2 / sum phi^2 to minimise over lambda'
 //   alone (variable projection), by the same search as the width.
 // The window, +-3 lambda_KdV, holds the whole wave (sech^2(3) = 0.01) and little of what trails
