@@ -56,6 +56,21 @@ struct CubicSpline {
     return r < support * h ? v : 0.0;
   }
 
+  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
+  // rest, sweep.hpp): one q and one set of powers for both, and no cut of its own, so that the
+  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
+  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  static void inside(double r, double h, double& w, double& factor) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double a = std::max(0.0, 2.0 - q);
+    const double b = std::max(0.0, 1.0 - q);
+    w = norm * inv_hd(ih) * (0.25 * a * a * a - b * b * b);
+    const double inner = -3.0 + 2.25 * q;
+    const double outer = -0.75 * a * a / std::max(q, 1.0);
+    factor = norm * inv_hd(ih) * ih * ih * (q < 1.0 ? inner : outer);
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

@@ -55,6 +55,24 @@ struct WendlandC2 {
     return r < support * h ? v : 0.0;
   }
 
+  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
+  // rest, sweep.hpp): one q and one set of powers for both, and no cut of its own, so that the
+  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
+  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  static void inside(double r, double h, double& w, double& factor) noexcept {
+    const double ih = 1.0 / h;
+    const double q = r * ih;
+    const double t = std::max(0.0, 1.0 - 0.5 * q);
+    const double t2 = t * t;
+    if constexpr (D == 1) {
+      w = norm * ih * t2 * t * (1.5 * q + 1.0);
+      factor = -3.0 * norm * ih * ih * ih * t2;
+    } else {
+      w = norm * inv_hd(ih) * t2 * t2 * (2.0 * q + 1.0);
+      factor = -5.0 * norm * inv_hd(ih) * ih * ih * t2 * t;
+    }
+  }
+
  private:
   static constexpr double inv_hd(double ih) {
     return D == 1 ? ih : D == 2 ? ih * ih : ih * ih * ih;

@@ -149,9 +149,10 @@ FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
     const bool in = r2 < cut2 && j >= lo;
     g.r = std::sqrt(r2);
     g.h = h;
-    // Evaluated in every lane, then masked (a masked evaluation would redo 1/h in the loop).
-    const double w = Kernel::w(g.r, h);
-    const double factor = Kernel::gradient_factor(g.r, h);
+    // Evaluated in every lane, then masked (a masked evaluation would redo 1/h in the loop);
+    // the mask is the kernel's cut (Kernel::inside has none).
+    double w, factor;
+    Kernel::inside(g.r, h, w, factor);
     g.w = in ? w : 0.0;
     g.gradw = g.xij * (in ? factor : 0.0);
     g.in = in ? 1.0 : 0.0;
