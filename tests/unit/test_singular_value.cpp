@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include "flume/core/singular_value.hpp"
@@ -79,6 +80,48 @@ TEST(SingularValue, SingularAndIdentityMatrices) {
   Mat<2> shear = Mat<2>::identity();
   shear(0, 1) = 10.0;
   EXPECT_NEAR(smallest_singular_value(shear), (std::sqrt(104.0) - 10.0) / 2.0, 1e-12);
+}
+
+// singular_value_at_least(M, s) is smallest_singular_value(M) >= s: checked on random matrices
+// of known singular values against thresholds on either side of sigma_min (1e-6 away: far
+// beyond both routes' round-off, 1e-8 at worst above), on the shear, and on a rank-one matrix.
+template <int D>
+void expect_at_least_agrees(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 2.0), angle(-3.2, 3.2);
+  for (int trial = 0; trial < 1000; ++trial) {
+    Mat<D> S;
+    double least = 1e300;
+    for (int k = 0; k < D; ++k) {
+      S(k, k) = u(rng);
+      least = std::min(least, S(k, k));
+    }
+    Mat<D> M;
+    if constexpr (D == 2)
+      M = rotation2(angle(rng)) * S * transpose(rotation2(angle(rng)));
+    else
+      M = rotation3(rng) * S * transpose(rotation3(rng));
+    for (double s : {0.05, 0.3, 1.0, least - 1e-6, least + 1e-6}) {
+      if (s <= 0.0) continue;
+      EXPECT_EQ(singular_value_at_least(M, s), least >= s) << trial << " s = " << s;
+    }
+  }
+}
+
+TEST(SingularValue, AtLeastAgreesWithTheSmallest2D) {
+  expect_at_least_agrees<2>(3);
+  Mat<2> shear = Mat<2>::identity();
+  shear(0, 1) = 10.0;  // sigma_min 0.0990195...
+  EXPECT_TRUE(singular_value_at_least(shear, 0.0990));
+  EXPECT_FALSE(singular_value_at_least(shear, 0.0991));
+  EXPECT_FALSE(singular_value_at_least(outer(Vec<2>{{1.0, 2.0}}, Vec<2>{{-0.5, 3.0}}), 0.05));
+  // The identity scaled: both singular values s, on the threshold's either side.
+  EXPECT_TRUE(singular_value_at_least(Mat<2>::identity() * 0.5, 0.4999));
+  EXPECT_FALSE(singular_value_at_least(Mat<2>::identity() * 0.5, 0.5001));
+}
+
+TEST(SingularValue, AtLeastAgreesWithTheSmallest3D) {
+  expect_at_least_agrees<3>(4);
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ inline constexpr double kMinSingularValue = 0.05;
 // Whether the correction matrix M_a of BL (41) is inverted (L_a = M_a^{-T}).
 template <int D>
 bool correction_usable(const Mat<D>& moment) {
-  return smallest_singular_value(moment) >= kMinSingularValue;
+  return singular_value_at_least(moment, kMinSingularValue);
 }
 
 // The sums the sweep gathers, in parts, so that a sweep carries only what its finish uses

@@ -58,7 +58,7 @@ struct DensitySummationFirstOrderBL47 {
   void finish(Acc& acc, std::size_t i) const {
     Vec<D> beta;  // BL (51): the first moment sum_b V_b (x_b - x_a) W is -vxw
     const double size = trace(acc.vxxw) / D;
-    if (size > 0.0 && smallest_singular_value(acc.vxxw) >= kMinRelativeSingularValue * size)
+    if (size > 0.0 && singular_value_at_least(acc.vxxw, kMinRelativeSingularValue * size))
       beta = inverse(acc.vxxw) * (-acc.vxw);
     const double alpha = 1.0 / (acc.vw + dot(beta, acc.vxw));  // BL (52)
     ps.rho[i] = alpha * (acc.mw + dot(beta, acc.mxw));
