@@ -218,26 +218,6 @@ void expect_gradient_factor() {
     EXPECT_EQ(K::gradient_factor(f * K::support * h, h), 0.0) << "r = " << f << " * support";
 }
 
-template <class K>
-void expect_inside() {
-  // inside(r, h) gives the pair loop W and the gradient factor from one evaluation: within the
-  // support they are w()'s and gradient_factor()'s, the same formulas with q rounded once
-  // instead of (in places) contracted into a fused multiply-add, so they differ by a few ulps
-  // of the peak at most (tolerance 1e-14 of W(0), F(0): about 50 ulps).
-  for (double h : {0.37, 2.5}) {
-    const double w_peak = K::w(0.0, h);
-    const double f_peak = std::abs(K::gradient_factor(0.0, h));
-    const int n = 1000;
-    for (int i = 0; i < n; ++i) {
-      const double r = K::support * h * i / n;
-      double w = 0.0, f = 0.0;
-      K::inside(r, h, w, f);
-      EXPECT_NEAR(w, K::w(r, h), 1e-14 * w_peak) << "r = " << r;
-      EXPECT_NEAR(f, K::gradient_factor(r, h), 1e-14 * f_peak) << "r = " << r;
-    }
-  }
-}
-
 // Every property for kernel Kernel<D>, as tests named Kernels.<Short><Property><Dim>.
 #define FLUME_KERNEL_TESTS(Short, Kernel, D, Dim) \
   TEST(Kernels, Short##Normalisation##Dim) {      \
@@ -260,9 +240,6 @@ void expect_inside() {
   }                                               \
   TEST(Kernels, Short##GradientFactor##Dim) {     \
     expect_gradient_factor<Kernel<D>>();          \
-  }                                               \
-  TEST(Kernels, Short##Inside##Dim) {             \
-    expect_inside<Kernel<D>>();                   \
   }
 
 FLUME_KERNEL_TESTS(Cubic, CubicSpline, 1, 1D)

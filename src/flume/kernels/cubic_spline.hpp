@@ -25,11 +25,8 @@ struct CubicSpline {
 
   // W in 1/m^D.
   static double w(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double a = std::max(0.0, 2.0 - q);
-    const double b = std::max(0.0, 1.0 - q);
-    const double v = norm * inv_hd(ih) * (0.25 * a * a * a - b * b * b);
+    double v = 0.0, factor = 0.0;
+    inside(r, h, v, factor);
     // The cut on r itself (not on the rounded q) makes W exactly 0 at r = support * h.
     return r < support * h ? v : 0.0;
   }
@@ -47,19 +44,14 @@ struct CubicSpline {
   // (1/r) dW/dr in 1/m^(D+2), finite at r = 0 (grad W = x_ij * gradient_factor, no division by
   // r): the derivative above divided by q is -3 + 9/4 q on q < 1 and -3/4 (2 - q)^2 / q beyond.
   static double gradient_factor(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double a = std::max(0.0, 2.0 - q);
-    const double inner = -3.0 + 2.25 * q;
-    const double outer = -0.75 * a * a / std::max(q, 1.0);
-    const double v = norm * inv_hd(ih) * ih * ih * (q < 1.0 ? inner : outer);
+    double w = 0.0, v = 0.0;
+    inside(r, h, w, v);
     return r < support * h ? v : 0.0;
   }
 
-  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
-  // rest, sweep.hpp): one q and one set of powers for both, and no cut of its own, so that the
-  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
-  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  // W and the gradient factor together, the formulas above, without the cut: w() and
+  // gradient_factor() are these cut at r = support * h; the pair loop calls this (its mask is
+  // the cut, sweep.hpp), so that its vectorised loop finds q and the powers once for both.
   static void inside(double r, double h, double& w, double& factor) noexcept {
     const double ih = 1.0 / h;
     const double q = r * ih;

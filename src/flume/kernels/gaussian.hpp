@@ -39,9 +39,9 @@ struct Gaussian {
 
   // W in 1/m^D.
   static double w(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double v = norm * inv_hd(ih) * std::exp(-q * q);
+    double v = 0.0, factor = 0.0;
+    inside(r, h, v, factor);
+    // The cut on r itself (not on the rounded q) makes W exactly 0 at r = support * h.
     return r < support * h ? v : 0.0;
   }
 
@@ -55,16 +55,14 @@ struct Gaussian {
 
   // (1/r) dW/dr in 1/m^(D+2), finite at r = 0 (grad W = x_ij * gradient_factor).
   static double gradient_factor(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double v = -2.0 * norm * inv_hd(ih) * ih * ih * std::exp(-q * q);
+    double w = 0.0, v = 0.0;
+    inside(r, h, w, v);
     return r < support * h ? v : 0.0;
   }
 
-  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
-  // rest, sweep.hpp): one q and one exponential for both, and no cut of its own, so that the
-  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
-  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  // W and the gradient factor together, the formulas above, without the cut: w() and
+  // gradient_factor() are these cut at r = support * h; the pair loop calls this (its mask is
+  // the cut, sweep.hpp), so that its vectorised loop finds q and the exponential once for both.
   static void inside(double r, double h, double& w, double& factor) noexcept {
     const double ih = 1.0 / h;
     const double q = r * ih;

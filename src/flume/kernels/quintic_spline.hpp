@@ -25,13 +25,8 @@ struct QuinticSpline {
 
   // W in 1/m^D.
   static double w(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double a = std::max(0.0, 3.0 - q);
-    const double b = std::max(0.0, 2.0 - q);
-    const double c = std::max(0.0, 1.0 - q);
-    const double a2 = a * a, b2 = b * b, c2 = c * c;
-    const double v = norm * inv_hd(ih) * (a2 * a2 * a - 6.0 * b2 * b2 * b + 15.0 * c2 * c2 * c);
+    double v = 0.0, factor = 0.0;
+    inside(r, h, v, factor);
     // The cut on r itself (not on the rounded q) makes W exactly 0 at r = support * h.
     return r < support * h ? v : 0.0;
   }
@@ -52,21 +47,14 @@ struct QuinticSpline {
   // r). On q < 1 the bracket of dwdr is 24 q - 24 q^3 + 10 q^4 (the constants cancel), so it
   // divides by q exactly; beyond, c = 0 and q >= 1.
   static double gradient_factor(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double a = std::max(0.0, 3.0 - q);
-    const double b = std::max(0.0, 2.0 - q);
-    const double a2 = a * a, b2 = b * b;
-    const double inner = 24.0 + q * q * (-24.0 + 10.0 * q);
-    const double outer = (a2 * a2 - 6.0 * b2 * b2) / std::max(q, 1.0);
-    const double v = -5.0 * norm * inv_hd(ih) * ih * ih * (q < 1.0 ? inner : outer);
+    double w = 0.0, v = 0.0;
+    inside(r, h, w, v);
     return r < support * h ? v : 0.0;
   }
 
-  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
-  // rest, sweep.hpp): one q and one set of powers for both, and no cut of its own, so that the
-  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
-  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  // W and the gradient factor together, the formulas above, without the cut: w() and
+  // gradient_factor() are these cut at r = support * h; the pair loop calls this (its mask is
+  // the cut, sweep.hpp), so that its vectorised loop finds q and the powers once for both.
   static void inside(double r, double h, double& w, double& factor) noexcept {
     const double ih = 1.0 / h;
     const double q = r * ih;

@@ -23,16 +23,8 @@ struct WendlandC2 {
 
   // W in 1/m^D.
   static double w(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double q = r * ih;
-    const double t = std::max(0.0, 1.0 - 0.5 * q);
-    double v;
-    if constexpr (D == 1) {
-      v = norm * ih * t * t * t * (1.5 * q + 1.0);
-    } else {
-      const double t2 = t * t;
-      v = norm * inv_hd(ih) * t2 * t2 * (2.0 * q + 1.0);
-    }
+    double v = 0.0, factor = 0.0;
+    inside(r, h, v, factor);
     // The cut on r itself (not on the rounded q) makes W exactly 0 at r = support * h.
     return r < support * h ? v : 0.0;
   }
@@ -44,21 +36,14 @@ struct WendlandC2 {
   // (1/r) dW/dr in 1/m^(D+2), finite at r = 0, so that grad W = x_ij * gradient_factor needs no
   // division by r: -3 (1 - q/2)^2 / h^2 (1D) and -5 (1 - q/2)^3 / h^2 (2D, 3D) times norm / h^D.
   static double gradient_factor(double r, double h) noexcept {
-    const double ih = 1.0 / h;
-    const double t = std::max(0.0, 1.0 - 0.5 * r * ih);
-    double v;
-    if constexpr (D == 1) {
-      v = -3.0 * norm * ih * ih * ih * t * t;
-    } else {
-      v = -5.0 * norm * inv_hd(ih) * ih * ih * t * t * t;
-    }
+    double w = 0.0, v = 0.0;
+    inside(r, h, w, v);
     return r < support * h ? v : 0.0;
   }
 
-  // W and the gradient factor together, for r < support * h only (the pair loop's mask cuts the
-  // rest, sweep.hpp): one q and one set of powers for both, and no cut of its own, so that the
-  // vectorised loop evaluates the kernel once. Within the support the values are w()'s and
-  // gradient_factor()'s up to the last bit (test_kernels.cpp).
+  // W and the gradient factor together, the formulas above, without the cut: w() and
+  // gradient_factor() are these cut at r = support * h; the pair loop calls this (its mask is
+  // the cut, sweep.hpp), so that its vectorised loop finds q and the powers once for both.
   static void inside(double r, double h, double& w, double& factor) noexcept {
     const double ih = 1.0 / h;
     const double q = r * ih;
