@@ -360,6 +360,76 @@ TEST(CellGrid, GhostsAreSortedByCellThenX) {
       ASSERT_LE(sorted[k - x.size() - 1][0], sorted[k - x.size()][0]) << c;
 }
 
+// The sorts of more points than one thread bins (the parallel counting sort, its running sum
+// over the cells shared among the threads) give the order of one thread for 2 and 3 threads, and
+// that order is by cell, then x, then index: real particles (20,000) and ghosts, few (binned by
+// one thread, their runs found along the order) and many (binned in parallel).
+TEST(CellGrid, SortsDoNotDependOnTheThreadCount) {
+  const ThreadCount restore;
+  auto x = uniform_cloud<2>(20000, 0.0, 1.0, 101);
+  for (std::size_t k = 0; k < 200; ++k)
+    x[k + 200][0] = x[k][0];  // equal x-coordinates: their order is by index
+  const auto few = uniform_cloud<2>(3000, -0.02, 1.02, 102);
+  const auto many = uniform_cloud<2>(12000, -0.02, 1.02, 103);
+  struct Sorted {
+    std::vector<std::uint32_t> real, real_start, ghosts_few, start_few, ghosts_many, start_many;
+  };
+  // Ghosts by cell (starts from n_real to n_real + ghosts), then x, then index.
+  auto expect_ghosts_sorted = [&](const std::vector<Vec<2>>& g,
+                                  const std::vector<std::uint32_t>& order,
+                                  const std::vector<std::uint32_t>& start) {
+    ASSERT_EQ(start.front(), x.size());
+    ASSERT_EQ(start.back(), x.size() + g.size());
+    for (std::size_t c = 0; c + 1 < start.size(); ++c)
+      for (std::uint32_t k = start[c] + 1; k < start[c + 1]; ++k) {
+        const std::uint32_t a = order[k - x.size() - 1], b = order[k - x.size()];
+        ASSERT_TRUE(g[a][0] < g[b][0] || (g[a][0] == g[b][0] && a < b)) << k;
+      }
+  };
+  std::vector<Sorted> runs;
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    CellGrid<2> grid;
+    Sorted s;
+    s.real = grid.sort_real(std::span<const Vec<2>>(x), 0.013);
+    for (std::size_t c = 0; c <= grid.cells(); ++c)
+      s.real_start.push_back(grid.real_begin(c));
+    s.ghosts_few = grid.sort_ghosts(std::span<const Vec<2>>(few));
+    for (std::size_t c = 0; c <= grid.cells(); ++c)
+      s.start_few.push_back(grid.ghost_begin(c));
+    s.ghosts_many = grid.sort_ghosts(std::span<const Vec<2>>(many));
+    for (std::size_t c = 0; c <= grid.cells(); ++c)
+      s.start_many.push_back(grid.ghost_begin(c));
+    if (threads == 1) {
+      // By cell (each cell's run holds its particles only), then x, then index.
+      ASSERT_EQ(s.real_start.front(), 0u);
+      ASSERT_EQ(s.real_start.back(), x.size());
+      for (std::size_t c = 0; c < grid.cells(); ++c)
+        for (std::uint32_t k = s.real_start[c]; k < s.real_start[c + 1]; ++k) {
+          ASSERT_EQ(grid.cell_of_real(k), c) << k;
+          if (k == s.real_start[c]) continue;
+          const std::uint32_t a = s.real[k - 1], b = s.real[k];
+          ASSERT_TRUE(x[a][0] < x[b][0] || (x[a][0] == x[b][0] && a < b)) << k;
+        }
+      std::vector<std::uint32_t> seen(s.real);
+      std::sort(seen.begin(), seen.end());
+      for (std::size_t k = 0; k < seen.size(); ++k)
+        ASSERT_EQ(seen[k], k);
+      expect_ghosts_sorted(few, s.ghosts_few, s.start_few);
+      expect_ghosts_sorted(many, s.ghosts_many, s.start_many);
+    }
+    runs.push_back(std::move(s));
+  }
+  for (std::size_t r = 1; r < runs.size(); ++r) {
+    EXPECT_EQ(runs[r].real, runs[0].real) << "threads run " << r;
+    EXPECT_EQ(runs[r].real_start, runs[0].real_start) << "threads run " << r;
+    EXPECT_EQ(runs[r].ghosts_few, runs[0].ghosts_few) << "threads run " << r;
+    EXPECT_EQ(runs[r].ghosts_many, runs[0].ghosts_many) << "threads run " << r;
+    EXPECT_EQ(runs[r].start_few, runs[0].start_few) << "threads run " << r;
+    EXPECT_EQ(runs[r].start_many, runs[0].start_many) << "threads run " << r;
+  }
+}
+
 // runs_outside: every real particle outside the box is in a run; the runs are increasing and
 // merged (a gap between any two). Boxes with finite and infinite sides, one that holds every
 // particle and one that holds none; 2D and 3D; uniform and clustered clouds.

@@ -78,6 +78,7 @@ class CellGrid {
   std::vector<std::uint32_t> ghost_cell_;     // cell of each ghost (before sorting)
   std::vector<std::uint32_t> order_;          // the last permutation returned
   std::vector<std::uint32_t> thread_counts_;  // counting sort: per thread and cell
+  std::vector<std::uint32_t> cell_totals_;    // counting sort: per thread, its cells' count
 };
 
 extern template class CellGrid<2>;
