@@ -60,6 +60,15 @@ TEST_F(FailureChecks, ADensityBandTighterThanTheFlowNamesTheWorstParticle) {
   EXPECT_NE(error.find("checks.density_band"), std::string::npos) << error;
 }
 
+TEST_F(FailureChecks, ACompressionAboveTheBandIsCaught) {
+  // Only the band's upper side can trip here: the column's foot compresses by more than 0.1 %
+  // while no density falls to half the starting one (the test above may trip on either side).
+  const auto error = failed_run("--set checks.density_band=[0.5,1.001]", "density_band");
+  const auto at = error.find("has density ");
+  ASSERT_NE(at, std::string::npos) << error;
+  EXPECT_GT(std::stod(error.substr(at + 12)), 1001.0) << error;
+}
+
 TEST_F(FailureChecks, AStepBelowTheFloorNamesTheFastestParticle) {
   // The CFL step shrinks as the water accelerates: a floor at 99.9 % of the first step trips.
   // It trips within the first steps: the row at t = 0 is what was written before.

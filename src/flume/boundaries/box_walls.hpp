@@ -160,8 +160,21 @@ struct BoxWalls {
   // particles [b, e); the walls are taken in turn (axis, then side), each over every particle,
   // with selects rather than branches on the particle, so that the loops vectorise.
   void put_back(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
-    [&]<int... K>(std::integer_sequence<int, K...>) {
-      ((put_back_at<K, 0>(ps, b, e, range), put_back_at<K, 1>(ps, b, e, range)), ...);
+    Vec<D> least, most;
+    for (int k = 0; k < D; ++k) {
+      least[k] = -std::numeric_limits<double>::infinity();
+      most[k] = std::numeric_limits<double>::infinity();
+    }
+    put_back(ps, b, e, range, least, most);
+  }
+  // The same, knowing that the positions of [b, e) lie within [least, most] on each axis (NaN
+  // ones aside): a wall that none of them stands beyond is skipped without a scan (most blocks,
+  // most steps). Returns whether a wall's put-back ran over the block (its particles may have
+  // moved; otherwise none has).
+  bool put_back(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range, const Vec<D>& least,
+                const Vec<D>& most) const {
+    return [&]<int... K>(std::integer_sequence<int, K...>) {
+      return (put_back_axis<K>(ps, b, e, range, least[K], most[K]) | ...);
     }
     (std::make_integer_sequence<int, D>{});
   }
@@ -260,16 +273,30 @@ struct BoxWalls {
     return any != 0;
   }
 
+  // put_back across both walls of axis K, the positions along it within [least, most];
+  // whether either ran.
+  template <int K>
+  bool put_back_axis(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range, double least,
+                     double most) const {
+    const bool low = put_back_at<K, 0>(ps, b, e, range, least < wall(K, 0));
+    // A particle put back across the lower wall may now stand beyond the upper one (a box
+    // narrower than the range): then the upper wall's scan is not skipped.
+    const bool high = put_back_at<K, 1>(ps, b, e, range, low || most > wall(K, 1));
+    return low || high;
+  }
+
   // put_back across the wall on `Side` of axis K (compile-time, so that the particle loop
-  // indexes fixed components and vectorises).
+  // indexes fixed components and vectorises), unless no particle may stand beyond it
+  // (!maybe_across); whether it ran.
   template <int K, int Side>
-  void put_back_at(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range) const {
+  bool put_back_at(ParticleSet<D>& ps, std::size_t b, std::size_t e, double range,
+                   bool maybe_across) const {
     const WallKind w = acts_as(K, Side);
-    if (w == WallKind::open) return;
+    if (w == WallKind::open || !maybe_across) return false;
     // The block is rewritten only when one of its particles has crossed this wall (a few
     // blocks a step): a read-only scan of x first, where the masked loops below read and write
     // x, v and v_half for every particle.
-    if (!any_across<K, Side>(ps, b, e, range)) return;
+    if (!any_across<K, Side>(ps, b, e, range)) return false;
     if (w == WallKind::periodic) {
       // Re-injection (W 6.1): out of one end, in at the other, r + (x_i - l).
       const double at = wall(K, Side), length = hi[K] - lo[K];
@@ -279,7 +306,7 @@ struct BoxWalls {
         const bool out = Side == 0 ? x[i][K] < at : x[i][K] > at;
         x[i][K] = out ? x[i][K] + (Side == 0 ? length : -length) : x[i][K];
       }
-      return;
+      return true;
     }
     const double at = wall(K, Side);
     const double u2 = 2.0 * wall_speed(K, Side);
@@ -300,6 +327,7 @@ struct BoxWalls {
         v_half[i][l] = mirror ? vhl : v_half[i][l];
       }
     }
+    return true;
   }
 
   std::array<std::array<double, 2>, D> place_{}, speed_{};

@@ -306,12 +306,17 @@ long Simulation<D>::first_unsound_of_all() const {
 
 template <int D>
 long Simulation<D>::put_back_and_check(std::size_t b, std::size_t e, double range) {
-  walls_.put_back(ps_, b, e, range);
+  using Clock = PhaseClock::Clock;
+  const auto scan = Clock::now();
+  BlockExtent<D> ext = block_extent(ps_, b, e);
+  double seconds = std::chrono::duration<double>(Clock::now() - scan).count();
+  const bool moved = walls_.put_back(ps_, b, e, range, ext.lo, ext.hi);
   repulsive_.put_back(ps_, b, e);
-  const auto start = PhaseClock::Clock::now();
-  const long bad = first_unsound(b, e);
-  check_seconds_[static_cast<std::size_t>(omp_get_thread_num())].s +=
-      std::chrono::duration<double>(PhaseClock::Clock::now() - start).count();
+  const auto start = Clock::now();
+  if (moved || !repulsive_.empty()) ext = block_extent(ps_, b, e);  // particles were put back
+  const long bad = first_unsound(b, e, ext);
+  seconds += std::chrono::duration<double>(Clock::now() - start).count();
+  check_seconds_[static_cast<std::size_t>(omp_get_thread_num())].s += seconds;
   return bad;
 }
 
