@@ -144,12 +144,6 @@ void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uin
 
 template <int D>
 const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>> x, double range) {
-  if (!(range > 0.0)) throw SimulationError("cell grid: range must be positive");
-  if (x.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
-    throw SimulationError("cell grid: too many particles for 32-bit indices");
-  range_ = range;
-  edge_ = range * kEdgeMargin;
-  n_real_ = x.size();
   Vec<D> lo, hi;
   double l[D], h[D];  // plain arrays: what OpenMP reduces as array sections
   for (int k = 0; k < D; ++k) {
@@ -174,6 +168,19 @@ const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>>
     lo[k] = x.empty() ? 0.0 : l[k];
     hi[k] = x.empty() ? 0.0 : h[k];
   }
+  return sort_real(x, range, lo, hi);
+}
+
+template <int D>
+const std::vector<std::uint32_t>& CellGrid<D>::sort_real(std::span<const Vec<D>> x, double range,
+                                                         const Vec<D>& lo, const Vec<D>& hi) {
+  if (!(range > 0.0)) throw SimulationError("cell grid: range must be positive");
+  if (x.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
+    throw SimulationError("cell grid: too many particles for 32-bit indices");
+  range_ = range;
+  edge_ = range * kEdgeMargin;
+  n_real_ = x.size();
+  const auto n = static_cast<long>(x.size());
   cell_count_ = 1;
   for (int k = 0; k < D; ++k) {
     const double extent = (hi[k] - lo[k]) / edge_;

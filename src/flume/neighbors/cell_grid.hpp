@@ -30,6 +30,11 @@ class CellGrid {
   // Lays the grid over the real particles x (cells of edge >= range) and sorts them by cell:
   // returns the permutation (new index k holds old index order[k]).
   const std::vector<std::uint32_t>& sort_real(std::span<const Vec<D>> x, double range);
+  // The same for particles whose bounding box the caller knows: lo and hi, the least and the
+  // largest coordinate along each axis (exactly, as the form above finds them in a pass of
+  // its own; every position finite). A simulation takes them from its drift's pass.
+  const std::vector<std::uint32_t>& sort_real(std::span<const Vec<D>> x, double range,
+                                              const Vec<D>& lo, const Vec<D>& hi);
 
   // Bins the ghost positions into the grid laid by sort_real: returns the stable permutation
   // of the ghosts by cell (new ghost k is old ghost order[k]). Ghosts beyond the grid are

@@ -83,6 +83,7 @@ void Simulation<D>::restore(const ParticleSet<D>& particles, const SimulationSta
   first_dt_ = state.first_dt;
   integrator_.set_history(state.leapfrog_dt_prev);
   h_range_known_ = false;
+  box_known_ = false;
   for (std::size_t i = 0; i < ps_.n_real; ++i)
     ps_.p[i] = phys_.eos.pressure(ps_.rho[i], ps_.uses(kFieldEnergy) ? ps_.e[i] : 0.0);
   walls_at(time_);
@@ -96,8 +97,11 @@ void Simulation<D>::prepare_neighbours(double range) {
     // Sorted by cell every step: each cell, and each row of three cells, is then a contiguous
     // run of indices. The order depends only on the positions (a stable counting sort), so the
     // results do not depend on the thread count.
-    sort_state(ps_, grid_.sort_real(std::span<const Vec<D>>(ps_.x.data(), ps_.n_real), range),
-               work_);
+    const std::span<const Vec<D>> x(ps_.x.data(), ps_.n_real);
+    const auto& order =
+        box_known_ ? grid_.sort_real(x, range, box_lo_, box_hi_) : grid_.sort_real(x, range);
+    box_known_ = false;
+    sort_state(ps_, order, work_);
   }
   PhaseClock::Scope phase(&clock_, "boundaries");
   walls_.build_halo(ps_, range, halo_, grid_);
@@ -315,18 +319,41 @@ long Simulation<D>::put_back_and_check(std::size_t b, std::size_t e, double rang
   const auto start = Clock::now();
   if (moved || !repulsive_.empty()) ext = block_extent(ps_, b, e);  // particles were put back
   const long bad = first_unsound(b, e, ext);
+  const auto t = static_cast<std::size_t>(omp_get_thread_num());
+  ThreadBox& box = thread_box_[t];
+  for (int k = 0; k < D; ++k) {
+    box.lo[k] = std::min(box.lo[k], ext.lo[k]);
+    box.hi[k] = std::max(box.hi[k], ext.hi[k]);
+  }
   seconds += std::chrono::duration<double>(Clock::now() - start).count();
-  check_seconds_[static_cast<std::size_t>(omp_get_thread_num())].s += seconds;
+  check_seconds_[t].s += seconds;
   return bad;
 }
 
 template <int D>
 template <class Pass>
 long Simulation<D>::pass_with_checks(double range, const Pass& pass) {
-  check_seconds_.assign(static_cast<std::size_t>(omp_get_max_threads()), ThreadSeconds{});
+  const auto threads = static_cast<std::size_t>(omp_get_max_threads());
+  check_seconds_.assign(threads, ThreadSeconds{});
+  ThreadBox none;
+  for (int k = 0; k < D; ++k) {
+    none.lo[k] = std::numeric_limits<double>::infinity();
+    none.hi[k] = -std::numeric_limits<double>::infinity();
+  }
+  thread_box_.assign(threads, none);
   const auto start = PhaseClock::Clock::now();
   const long bad =
       pass([&](std::size_t b, std::size_t e) { return put_back_and_check(b, e, range); });
+  // Every block sound, so every position finite: the box is the union of the threads' boxes
+  // (a least and a largest value are exact, in any order).
+  box_known_ = bad == static_cast<long>(ps_.n_real) && ps_.n_real > 0;
+  box_lo_ = none.lo;
+  box_hi_ = none.hi;
+  for (const ThreadBox& box : thread_box_)
+    for (int k = 0; k < D; ++k) {
+      box_lo_[k] = std::min(box_lo_[k], box.lo[k]);
+      box_hi_[k] = std::max(box_hi_[k], box.hi[k]);
+    }
   const double whole = std::chrono::duration<double>(PhaseClock::Clock::now() - start).count();
   double checks = 0.0;
   for (const ThreadSeconds& t : check_seconds_)

@@ -177,6 +177,17 @@ class Simulation {
     double s = 0.0;
   };
   std::vector<ThreadSeconds> check_seconds_;
+  // The real particles' bounding box as the last pass_with_checks found it (the union of its
+  // blocks' extents, each thread's own, then of the threads'), for the next sort by cell, which
+  // then needs no pass of its own over the positions (about 1 % of a `standard` step at 1e5).
+  // Known only from a pass that found every particle sound until the next sort takes it; a
+  // restored state is not known.
+  struct alignas(64) ThreadBox {
+    Vec<D> lo, hi;
+  };
+  std::vector<ThreadBox> thread_box_;
+  Vec<D> box_lo_{}, box_hi_{};
+  bool box_known_ = false;
   // Throws SimulationError if a real particle is not sound (the first one, by index).
   void check_state() const;
   // Throws the SimulationError that says which check particle i failed; for the density band
