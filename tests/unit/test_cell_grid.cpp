@@ -430,6 +430,41 @@ TEST(CellGrid, SortsDoNotDependOnTheThreadCount) {
   }
 }
 
+// The few ghosts' counting sort (one thread, over the occupied cells only) gives the order and
+// the cell starts of the parallel counting sort over every cell: the same 3,000 ghosts sorted
+// alone, and with 9,000 more far beyond the grid (clamped into its last cell, after every other
+// cell) so that they are binned in parallel. Sorted alone twice, with the many between: the
+// few ghosts' counts start from zero each time.
+TEST(CellGrid, FewGhostsSortAsTheParallelCountingSortDoes) {
+  const auto x = uniform_cloud<2>(20000, 0.0, 1.0, 111);
+  const auto few = uniform_cloud<2>(3000, -0.02, 1.02, 112);
+  auto many = few;
+  many.resize(12000, Vec<2>{{5.0, 5.0}});
+  CellGrid<2> grid;
+  grid.sort_real(std::span<const Vec<2>>(x), 0.013);
+  auto starts = [&] {
+    std::vector<std::uint32_t> s;
+    for (std::size_t c = 0; c <= grid.cells(); ++c)
+      s.push_back(grid.ghost_begin(c));
+    return s;
+  };
+  const auto order_few = grid.sort_ghosts(std::span<const Vec<2>>(few));
+  const auto start_few = starts();
+  const auto order_many = grid.sort_ghosts(std::span<const Vec<2>>(many));
+  const auto start_many = starts();
+  const auto order_again = grid.sort_ghosts(std::span<const Vec<2>>(few));
+  EXPECT_EQ(order_again, order_few);
+  EXPECT_EQ(starts(), start_few);
+  const std::size_t cells = grid.cells();
+  ASSERT_EQ(start_few[cells], x.size() + few.size());
+  ASSERT_EQ(start_many[cells], x.size() + many.size());
+  ASSERT_EQ(start_many[cells - 1], x.size() + few.size());  // the far ones: the last cell
+  for (std::size_t c = 0; c < cells; ++c)
+    ASSERT_EQ(start_few[c], start_many[c]) << c;
+  for (std::size_t k = 0; k < few.size(); ++k)
+    ASSERT_EQ(order_few[k], order_many[k]) << k;
+}
+
 // runs_outside: every real particle outside the box is in a run; the runs are increasing and
 // merged (a gap between any two). Boxes with finite and infinite sides, one that holds every
 // particle and one that holds none; 2D and 3D; uniform and clustered clouds.

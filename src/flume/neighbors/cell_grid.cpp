@@ -1,7 +1,9 @@
 #include "flume/neighbors/cell_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <omp.h>
@@ -84,6 +86,46 @@ std::size_t CellGrid<D>::cell_of(const Vec<D>& p) const {
 }
 
 template <int D>
+void CellGrid<D>::counting_sort_few(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
+                                    std::vector<std::uint32_t>& start,
+                                    std::vector<std::uint32_t>& order) {
+  // The counts live in few_counts_, all zero between calls (only the occupied cells' are
+  // touched, and set back to zero at the end), and the occupied cells are bits of a bitmap, so
+  // that the running sum visits them in order without a loop over the empty cells: the starts
+  // of a run of empty cells are one fill. The dam break's ghosts at 1e5 particles (1,900 in
+  // 14,000 cells) took about 35 us a step as the counting sort over every cell.
+  const std::size_t n = cell.size();
+  const std::size_t cells = cell_count_;
+  if (few_counts_.size() < cells) few_counts_.resize(cells);  // new counts are zero
+  occupied_.assign((cells + 63) / 64, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = cell[i];
+    ++few_counts_[c];
+    occupied_[c / 64] |= std::uint64_t{1} << (c % 64);
+  }
+  // Each occupied cell's start, in cell order; cells [next, c] start where c does.
+  std::uint32_t run = offset;
+  std::size_t next = 0;
+  auto each_occupied = [&](auto&& f) {
+    for (std::size_t w = 0; w < occupied_.size(); ++w)
+      for (std::uint64_t bits = occupied_[w]; bits != 0; bits &= bits - 1)
+        f(w * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+  };
+  each_occupied([&](std::size_t c) {
+    std::fill(start.begin() + static_cast<std::ptrdiff_t>(next),
+              start.begin() + static_cast<std::ptrdiff_t>(c) + 1, run);
+    const std::uint32_t here = few_counts_[c];
+    few_counts_[c] = run - offset;  // now where the cell's next particle goes in `order`
+    run += here;
+    next = c + 1;
+  });
+  std::fill(start.begin() + static_cast<std::ptrdiff_t>(next), start.end(), run);
+  for (std::size_t i = 0; i < n; ++i)
+    order[few_counts_[cell[i]]++] = static_cast<std::uint32_t>(i);
+  each_occupied([&](std::size_t c) { few_counts_[c] = 0; });
+}
+
+template <int D>
 void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
                                 std::vector<std::uint32_t>& start,
                                 std::vector<std::uint32_t>& order) {
@@ -100,6 +142,10 @@ void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uin
   start.resize(cells + 1);
   order.resize(n);
   const bool parallel = n >= kParallelFrom;
+  if (!parallel) {
+    counting_sort_few(cell, offset, start, order);
+    return;
+  }
   const auto most = parallel ? static_cast<std::size_t>(omp_get_max_threads()) : 1;
   if (thread_counts_.size() < most * cells) thread_counts_.resize(most * cells);
   cell_totals_.resize(most);
@@ -281,9 +327,10 @@ void CellGrid<D>::runs_outside(const Vec<D>& lo, const Vec<D>& hi,
 template <int D>
 std::size_t CellGrid<D>::bytes() const {
   return sizeof(std::uint32_t) *
-         (real_start_.capacity() + ghost_start_.capacity() + real_cell_.capacity() +
-          ghost_cell_.capacity() + order_.capacity() + thread_counts_.capacity() +
-          cell_totals_.capacity());
+             (real_start_.capacity() + ghost_start_.capacity() + real_cell_.capacity() +
+              ghost_cell_.capacity() + order_.capacity() + thread_counts_.capacity() +
+              cell_totals_.capacity() + few_counts_.capacity()) +
+         sizeof(std::uint64_t) * occupied_.capacity();
 }
 
 template class CellGrid<2>;

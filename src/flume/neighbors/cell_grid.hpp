@@ -69,6 +69,10 @@ class CellGrid {
   // Stable counting sort of `cell` into `order`, with the cell starts (offset added) in `start`.
   void counting_sort(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
                      std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& order);
+  // The same for fewer points than are binned in parallel (the ghosts), by one thread, in time
+  // proportional to the points and the occupied cells rather than to every cell.
+  void counting_sort_few(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
+                         std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& order);
 
   double range_ = 0.0;
   double edge_ = 0.0;
@@ -84,6 +88,8 @@ class CellGrid {
   std::vector<std::uint32_t> order_;          // the last permutation returned
   std::vector<std::uint32_t> thread_counts_;  // counting sort: per thread and cell
   std::vector<std::uint32_t> cell_totals_;    // counting sort: per thread, its cells' count
+  std::vector<std::uint32_t> few_counts_;     // counting_sort_few: per cell, zero between calls
+  std::vector<std::uint64_t> occupied_;       // counting_sort_few: a bit per cell
 };
 
 extern template class CellGrid<2>;
