@@ -129,6 +129,7 @@ template <int D>
 void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uint32_t offset,
                                 std::vector<std::uint32_t>& start,
                                 std::vector<std::uint32_t>& order) {
+  // (Fewer points than kParallelFrom: counting_sort_few, by one thread.)
   // Stable and in parallel: thread t counts the particles of its contiguous chunk per cell,
   // the offsets run over (cell, thread), and each thread places its chunk in index order. A
   // cell then holds its particles in index order for any number of threads, the order of the
@@ -141,15 +142,14 @@ void CellGrid<D>::counting_sort(const std::vector<std::uint32_t>& cell, std::uin
   const std::size_t cells = cell_count_;
   start.resize(cells + 1);
   order.resize(n);
-  const bool parallel = n >= kParallelFrom;
-  if (!parallel) {
+  if (n < kParallelFrom) {
     counting_sort_few(cell, offset, start, order);
     return;
   }
-  const auto most = parallel ? static_cast<std::size_t>(omp_get_max_threads()) : 1;
+  const auto most = static_cast<std::size_t>(omp_get_max_threads());
   if (thread_counts_.size() < most * cells) thread_counts_.resize(most * cells);
   cell_totals_.resize(most);
-#pragma omp parallel if (parallel)
+#pragma omp parallel
   {
     const auto threads = static_cast<std::size_t>(omp_get_num_threads());
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
