@@ -19,6 +19,27 @@ struct BlockExtent {
   bool finite = true;  // every component of x and v finite
 };
 
+// The extent of no particle (every least +inf, every largest -inf): what join starts from.
+template <int D>
+BlockExtent<D> empty_extent() {
+  BlockExtent<D> ext;
+  for (int k = 0; k < D; ++k) {
+    ext.lo[k] = std::numeric_limits<double>::infinity();
+    ext.hi[k] = -std::numeric_limits<double>::infinity();
+  }
+  return ext;
+}
+
+// into becomes the extent of both blocks (exact: a least and a largest in any order).
+template <int D>
+void join(BlockExtent<D>& into, const BlockExtent<D>& other) {
+  for (int k = 0; k < D; ++k) {
+    into.lo[k] = other.lo[k] < into.lo[k] ? other.lo[k] : into.lo[k];
+    into.hi[k] = other.hi[k] > into.hi[k] ? other.hi[k] : into.hi[k];
+  }
+  into.finite = into.finite && other.finite;
+}
+
 template <int D>
 BlockExtent<D> block_extent(const ParticleSet<D>& ps, std::size_t b, std::size_t e) {
   static_assert(D >= 1 && D <= 3 && sizeof(Vec<D>) == D * sizeof(double));

@@ -99,7 +99,7 @@ void Simulation<D>::prepare_neighbours(double range) {
     // results do not depend on the thread count.
     const std::span<const Vec<D>> x(ps_.x.data(), ps_.n_real);
     const auto& order =
-        box_known_ ? grid_.sort_real(x, range, box_lo_, box_hi_) : grid_.sort_real(x, range);
+        box_known_ ? grid_.sort_real(x, range, box_.lo, box_.hi) : grid_.sort_real(x, range);
     box_known_ = false;
     sort_state(ps_, order, work_);
   }
@@ -320,11 +320,7 @@ long Simulation<D>::put_back_and_check(std::size_t b, std::size_t e, double rang
   if (moved || !repulsive_.empty()) ext = block_extent(ps_, b, e);  // particles were put back
   const long bad = first_unsound(b, e, ext);
   const auto t = static_cast<std::size_t>(omp_get_thread_num());
-  ThreadBox& box = thread_box_[t];
-  for (int k = 0; k < D; ++k) {
-    box.lo[k] = std::min(box.lo[k], ext.lo[k]);
-    box.hi[k] = std::max(box.hi[k], ext.hi[k]);
-  }
+  join(thread_box_[t].ext, ext);
   seconds += std::chrono::duration<double>(Clock::now() - start).count();
   check_seconds_[t].s += seconds;
   return bad;
@@ -335,25 +331,16 @@ template <class Pass>
 long Simulation<D>::pass_with_checks(double range, const Pass& pass) {
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   check_seconds_.assign(threads, ThreadSeconds{});
-  ThreadBox none;
-  for (int k = 0; k < D; ++k) {
-    none.lo[k] = std::numeric_limits<double>::infinity();
-    none.hi[k] = -std::numeric_limits<double>::infinity();
-  }
-  thread_box_.assign(threads, none);
+  thread_box_.assign(threads, ThreadBox{empty_extent<D>()});
   const auto start = PhaseClock::Clock::now();
   const long bad =
       pass([&](std::size_t b, std::size_t e) { return put_back_and_check(b, e, range); });
   // Every block sound, so every position finite: the box is the union of the threads' boxes
   // (a least and a largest value are exact, in any order).
   box_known_ = bad == static_cast<long>(ps_.n_real) && ps_.n_real > 0;
-  box_lo_ = none.lo;
-  box_hi_ = none.hi;
+  box_ = empty_extent<D>();
   for (const ThreadBox& box : thread_box_)
-    for (int k = 0; k < D; ++k) {
-      box_lo_[k] = std::min(box_lo_[k], box.lo[k]);
-      box_hi_[k] = std::max(box_hi_[k], box.hi[k]);
-    }
+    join(box_, box.ext);
   const double whole = std::chrono::duration<double>(PhaseClock::Clock::now() - start).count();
   double checks = 0.0;
   for (const ThreadSeconds& t : check_seconds_)
