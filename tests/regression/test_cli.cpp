@@ -74,6 +74,25 @@ TEST_F(Cli, RunWritesTheRunDirectory) {
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
 
+// A small case asked to run on two threads steps on one (at most one thread per 1,000
+// particles, sim/thread_team.hpp), says so in its log and its summary; --particles-per-thread 0
+// gives it both.
+TEST_F(Cli, ASmallCaseStepsOnOneThreadUnlessToldOtherwise) {
+  const auto file = write_case(test::dam_break_toml("standard", 8, 0.005));
+  const auto one = dir_ / "one", two = dir_ / "two";
+  ASSERT_EQ(flume("run " + file.string() + " --quiet --threads 2 --out " + one.string()).status, 0);
+  EXPECT_EQ(nlohmann::json::parse(slurp(one / "summary.json"))["threads"], 1);
+  EXPECT_NE(slurp(one / "log.txt").find("1 thread(s) of the 2 asked"), std::string::npos)
+      << slurp(one / "log.txt");
+  ASSERT_EQ(flume("run " + file.string() + " --quiet --threads 2 --particles-per-thread 0 --out " +
+                  two.string())
+                .status,
+            0);
+  EXPECT_EQ(nlohmann::json::parse(slurp(two / "summary.json"))["threads"], 2);
+  EXPECT_EQ(slurp(two / "log.txt").find("asked"), std::string::npos);
+  EXPECT_EQ(slurp(one / "diagnostics.csv"), slurp(two / "diagnostics.csv"));
+}
+
 TEST_F(Cli, ResolvedCaseRepeatsTheRunExactly) {
   const auto file = write_case(test::dam_break_toml("standard", 8, 0.01));
   ASSERT_EQ(flume("run " + file.string() + " --quiet --out " + (dir_ / "a").string()).status, 0);

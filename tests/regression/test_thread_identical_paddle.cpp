@@ -28,9 +28,9 @@ TEST(ThreadIdenticalPaddle, OneAndTwoThreadsWriteIdenticalProbesAndDiagnostics) 
   for (int threads : {1, 2}) {
     const std::string name = "t" + std::to_string(threads);
     const std::string cmd = std::string(FLUME_BINARY) + " run " + case_file + sets +
-                            " --quiet --threads " + std::to_string(threads) + " --out " +
-                            (dir / name).string() + " > " + (dir / (name + ".log")).string() +
-                            " 2>&1";
+                            " --quiet --particles-per-thread 0 --threads " +
+                            std::to_string(threads) + " --out " + (dir / name).string() + " > " +
+                            (dir / (name + ".log")).string() + " 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << test::slurp(dir / (name + ".log"));
   }
   for (const char* f : {"diagnostics.csv", "probes.csv"}) {

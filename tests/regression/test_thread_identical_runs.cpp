@@ -37,9 +37,9 @@ class ThreadIdenticalRuns : public ::testing::TestWithParam<std::string> {
   // Runs the case with `threads` OpenMP threads into dir_/name; returns the exit status.
   int run(const fs::path& case_file, int threads, const std::string& name) {
     const std::string cmd = std::string(FLUME_BINARY) + " run " + case_file.string() +
-                            " --quiet --threads " + std::to_string(threads) + " --out " +
-                            (dir_ / name).string() + " > " + (dir_ / (name + ".log")).string() +
-                            " 2>&1";
+                            " --quiet --particles-per-thread 0 --threads " +
+                            std::to_string(threads) + " --out " + (dir_ / name).string() + " > " +
+                            (dir_ / (name + ".log")).string() + " 2>&1";
     const int raw = std::system(cmd.c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   }

@@ -58,27 +58,22 @@ int finish(const std::string& name, const flume::RunResult& result, const flume:
   return 0;
 }
 
+// `opt` holds the command line's threads, particles per thread and quiet.
 int cmd_run(const std::string& case_file, const std::string& out,
-            const std::vector<std::string>& sets, int threads, bool quiet) {
+            const std::vector<std::string>& sets, flume::RunOptions opt) {
   const flume::CaseSpec spec = flume::read_case(case_file, sets);
-  flume::RunOptions opt;
   opt.out_dir =
       out.empty() ? std::filesystem::path("runs") / spec.name : std::filesystem::path(out);
   check_out_dir(opt.out_dir);
-  opt.threads = threads;
-  opt.quiet = quiet;
-  return finish(spec.name, flume::run_case(spec, opt), opt, quiet);
+  return finish(spec.name, flume::run_case(spec, opt), opt, opt.quiet);
 }
 
-int cmd_resume(const std::string& dir, int threads, bool quiet) {
-  flume::RunOptions opt;
+int cmd_resume(const std::string& dir, flume::RunOptions opt) {
   opt.out_dir = dir;
   if (!std::filesystem::is_directory(opt.out_dir))
     throw flume::InputError(fmt::format("{}: not a run directory", dir));
   check_out_dir(opt.out_dir);
-  opt.threads = threads;
-  opt.quiet = quiet;
-  return finish(opt.out_dir.filename().string(), flume::resume_run(opt), opt, quiet);
+  return finish(opt.out_dir.filename().string(), flume::resume_run(opt), opt, opt.quiet);
 }
 
 int cmd_cases() {
@@ -99,22 +94,26 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run one case");
   std::string case_file, out;
   std::vector<std::string> sets;
-  int threads = 0;
-  bool quiet = false;
+  flume::RunOptions ropt;
+  const std::string per_thread_help = "at most one thread per N particles (default " +
+                                      std::to_string(flume::kParticlesPerThread) +
+                                      "; 0: every thread at any size); results do not depend on it";
   run->add_option("case", case_file, "case file (TOML)")->required();
   run->add_option("--out", out, "run directory (default runs/<case name>)");
   run->add_option("--set", sets, "override a case-file value: KEY=VALUE (dotted TOML path)")
       ->allow_extra_args(false);
-  run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+  run->add_option("--threads", ropt.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
-  run->add_flag("--quiet", quiet, "no progress line and no messages");
+  run->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help);
+  run->add_flag("--quiet", ropt.quiet, "no progress line and no messages");
 
   auto* res = app.add_subcommand("resume", "continue a run from its newest valid checkpoint");
   std::string resume_dir;
   res->add_option("dir", resume_dir, "run directory (with checkpoints/)")->required();
-  res->add_option("--threads", threads, "OpenMP threads (default: all cores)")
+  res->add_option("--threads", ropt.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
-  res->add_flag("--quiet", quiet, "no progress line and no messages");
+  res->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help);
+  res->add_flag("--quiet", ropt.quiet, "no progress line and no messages");
 
   auto* val = app.add_subcommand("validate", "run validation cases and compare with references");
   flume::ValidateOptions vopt;
@@ -166,8 +165,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (run->parsed()) return cmd_run(case_file, out, sets, threads, quiet);
-    if (res->parsed()) return cmd_resume(resume_dir, threads, quiet);
+    if (run->parsed()) return cmd_run(case_file, out, sets, ropt);
+    if (res->parsed()) return cmd_resume(resume_dir, ropt);
     if (ben->parsed()) {
       bopt.out_dir = bout;
       if (steps_opt->count() > 0) bopt.steps = bsteps;

@@ -129,6 +129,7 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
   CaseProbes<D> probes(spec);
   try {
     sim = std::make_unique<Simulation<D>>(build_simulation<D>(spec));
+    sim->set_particles_per_thread(opt.particles_per_thread);
     if (from) sim->restore(from->particles, from->state);
   } catch (const SimulationError& e) {
     result.error = e.what();
@@ -136,11 +137,20 @@ RunResult run_dim(const CaseSpec& spec, const RunOptions& opt, const Checkpoint<
   long steps_before = 0;
   if (sim) {
     result.particles = sim->particles().n_real;
+    // The threads the steps run on: fewer than asked for a small case (thread_team.hpp).
+    const int asked = result.threads;
+    result.threads = sim->step_threads();
+    const std::string fewer = result.threads < asked
+                                  ? fmt::format(
+                                        " of the {} asked (at most one per {} particles: "
+                                        "--particles-per-thread)",
+                                        asked, opt.particles_per_thread)
+                                  : "";
     out.log(
         fmt::format("flume {}: case {} ({}D), {} particles, scheme {} ({} density + {} force, "
-                    "correction {}), kernel {}, {} thread(s)",
+                    "correction {}), kernel {}, {} thread(s){}",
                     FLUME_VERSION, spec.name, D, result.particles, spec.preset, spec.density,
-                    spec.force, spec.correction, spec.kernel, result.threads));
+                    spec.force, spec.correction, spec.kernel, result.threads, fewer));
     out.log(fmt::format("  c0 = {:.4g} m/s, kappa = {:.4g} Pa, h = {:.4g} m, end time {} s",
                         spec.sound_speed, spec.bulk_modulus, spec.h_over_dx * spec.spacing,
                         spec.end_time));

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "flume/case/case_spec.hpp"
+#include "flume/sim/thread_team.hpp"
 
 namespace flume {
 
@@ -16,6 +17,9 @@ struct RunOptions {
   std::filesystem::path out_dir;  // run directory
   int threads = 0;                // 0 = OpenMP's default
   bool quiet = false;             // no progress line, no messages on stdout
+  // The steps run on at most one thread per this many real particles; 0: on every thread
+  // (sim/thread_team.hpp).
+  std::size_t particles_per_thread = kParticlesPerThread;
 };
 
 struct RunResult {

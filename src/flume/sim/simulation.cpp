@@ -182,7 +182,14 @@ const std::vector<Vec<D>>* Simulation<D>::xsph_of(const SweepContext<D>& ctx,
 }
 
 template <int D>
+int Simulation<D>::step_threads() const {
+  return team_size(ps_.n_real, omp_get_max_threads(), config_.particles_per_thread);
+}
+
+template <int D>
 void Simulation<D>::step(double max_dt) {
+  const ThreadTeam team(step_threads());
+  last_step_threads_ = omp_get_max_threads();
   switch (config_.integrator) {
     case Integrator::leap_frog:
       step_leap_frog(max_dt);

@@ -21,6 +21,7 @@
 #include "flume/sim/block_extent.hpp"
 #include "flume/sim/phase_clock.hpp"
 #include "flume/sim/simulation_state.hpp"
+#include "flume/sim/thread_team.hpp"
 
 namespace flume {
 
@@ -44,6 +45,9 @@ struct SimulationConfig {
   // starting density, a step below min_dt_ratio times the first one.
   double density_band_lo = 0.0, density_band_hi = std::numeric_limits<double>::infinity();
   double min_dt_ratio = 1e-4;
+  // A step runs on at most one thread per this many real particles (thread_team.hpp); 0: on
+  // every thread at any size. Results are the same either way.
+  std::size_t particles_per_thread = kParticlesPerThread;
 };
 
 template <int D>
@@ -57,6 +61,13 @@ class Simulation {
   // non-finite value, a density outside the band, a particle leaving the domain, the step
   // collapsing); the state is then that of the failed step.
   void step(double max_dt);
+
+  // The threads a step runs on now: OpenMP's count, at most one per
+  // config.particles_per_thread real particles (thread_team.hpp).
+  int step_threads() const;
+  void set_particles_per_thread(std::size_t n) { config_.particles_per_thread = n; }
+  // The threads the last step's parallel passes were started with (0 before the first step).
+  int last_step_threads() const { return last_step_threads_; }
 
   // What a checkpoint holds (run/checkpoint.hpp): the clock and the integrator's memory, and
   // the particles' state fields. restore() takes them back (the particles' fields must be
@@ -215,6 +226,7 @@ class Simulation {
   double h_min_ = 0.0, h_max_ = 0.0;
   bool h_range_known_ = false;
   long steps_ = 0;
+  int last_step_threads_ = 0;
   double rho_lo_ = 0.0, rho_hi_ = 0.0;  // the density band, kg/m^3 (from the starting state)
   PhaseClock clock_;
 };
