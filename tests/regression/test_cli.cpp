@@ -114,6 +114,10 @@ TEST_F(Cli, BadInputExitsWithTwoAndOneLine) {
     EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
   }
   EXPECT_EQ(flume("run " + (dir_ / "missing.toml").string()).status, 2);
+  // A negative count of particles per thread (an unsigned value: it would wrap to a huge one).
+  const auto per_thread = flume("run " + file.string() + " --particles-per-thread -3");
+  EXPECT_EQ(per_thread.status, 2);
+  EXPECT_NE(per_thread.err.find("--particles-per-thread"), std::string::npos) << per_thread.err;
   EXPECT_EQ(flume("run").status, 2);
   EXPECT_EQ(flume("frobnicate").status, 2);
 }

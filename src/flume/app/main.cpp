@@ -95,6 +95,13 @@ int main(int argc, char** argv) {
   std::string case_file, out;
   std::vector<std::string> sets;
   flume::RunOptions ropt;
+  // A count of particles, 0 or more (an unsigned option would take -3 as a huge count).
+  const CLI::Validator count_check(
+      [](std::string& v) {
+        return v.rfind('-', 0) == 0 ? std::string("must be 0 or more (0: every thread)")
+                                    : std::string();
+      },
+      "N >= 0");
   const std::string per_thread_help = "at most one thread per N particles (default " +
                                       std::to_string(flume::kParticlesPerThread) +
                                       "; 0: every thread at any size); results do not depend on it";
@@ -104,7 +111,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   run->add_option("--threads", ropt.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
-  run->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help);
+  run->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help)
+      ->check(count_check);
   run->add_flag("--quiet", ropt.quiet, "no progress line and no messages");
 
   auto* res = app.add_subcommand("resume", "continue a run from its newest valid checkpoint");
@@ -112,7 +120,8 @@ int main(int argc, char** argv) {
   res->add_option("dir", resume_dir, "run directory (with checkpoints/)")->required();
   res->add_option("--threads", ropt.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
-  res->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help);
+  res->add_option("--particles-per-thread", ropt.particles_per_thread, per_thread_help)
+      ->check(count_check);
   res->add_flag("--quiet", ropt.quiet, "no progress line and no messages");
 
   auto* val = app.add_subcommand("validate", "run validation cases and compare with references");
