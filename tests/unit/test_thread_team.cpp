@@ -24,21 +24,8 @@ TEST(TeamSize, OneThreadPerThousandParticlesAtMostAndAtLeastOne) {
   EXPECT_EQ(team_size(10, 3, 0), 3);
 }
 
-// Restores OpenMP's thread count at the end of a test.
-class SavedThreads {
- public:
-  SavedThreads() : saved_(omp_get_max_threads()) {}
-  ~SavedThreads() { omp_set_num_threads(saved_); }
-  SavedThreads(const SavedThreads&) = delete;
-  SavedThreads& operator=(const SavedThreads&) = delete;
-
- private:
-  int saved_;
-};
-
 TEST(ThreadTeam, ParallelRegionsInItsScopeRunOnItsCountAndTheCountComesBack) {
-  const SavedThreads saved;
-  omp_set_num_threads(3);
+  const ThreadTeam outer(3);  // and the test's starting count back at the end
   {
     const ThreadTeam team(1);
     int started = 0;
@@ -53,8 +40,7 @@ TEST(ThreadTeam, ParallelRegionsInItsScopeRunOnItsCountAndTheCountComesBack) {
 }
 
 TEST(ThreadTeam, ASmallSimulationStepsOnOneThreadUnlessToldOtherwise) {
-  const SavedThreads saved;
-  omp_set_num_threads(2);
+  const ThreadTeam outer(2);
   // 20 x 20 = 400 particles: one thread at the default 1,000 particles a thread.
   const auto spec = test::spec_from(test::dam_break_toml("standard", 20, 0.01));
   auto sim = build_simulation<2>(spec);
