@@ -1,12 +1,14 @@
 // How many threads a step of a simulation runs on. Every loop gives the same result for any
-// thread count (sweep.hpp), so this is a question of speed alone: a step synchronises its
-// threads some thirty times (each parallel pass, each sweep's barriers), a few microseconds each
-// on this machine kind, and below about a thousand particles a thread the split saves less than
-// that costs. `flume bench --threads 1,2 --steps 300`, ratios of 2 threads to 1 (noisy, one run
-// each): standard 1.09 / 0.88 / 1.14 / 1.49 / 1.78 at 1,024 / 1,521 / 2,025 / 2,500 / 3,025
-// particles, wsph 0.95 / 0.95 / 1.26 / 1.49 / 1.28, csph 1.32 / 1.46 / 1.63 / 1.44 / 1.15; a
-// still tank of 430 particles on a beach (tests/settling/test_slope_tank.cpp) 1.53 s on one
-// thread, 2.74 s on two.
+// thread count (sweep.hpp), so this is a question of speed alone: a step's threads meet at every
+// parallel pass's end and at each sweep's barriers, and below about a thousand particles a
+// thread the split saves less than those waits cost. A still tank of 430 particles on a beach
+// (tests/settling/test_slope_tank.cpp) took 1.53 s on one thread and 2.74 s on two, 79 % of the
+// two threads' samples (perf) in libgomp's barrier and pool waits. Ratios of 2 threads to 1 in
+// `flume bench --threads 1,2 --steps 300` (noisy, one run each) at 1,024 / 1,521 / 2,025 /
+// 2,500 / 3,025 particles:
+//   standard 1.09 / 0.88 / 1.14 / 1.49 / 1.78,
+//   wsph     0.95 / 0.95 / 1.26 / 1.49 / 1.28,
+//   csph     1.32 / 1.46 / 1.63 / 1.44 / 1.15.
 #pragma once
 
 #include <algorithm>
