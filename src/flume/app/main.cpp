@@ -40,8 +40,7 @@ void check_out_dir(const std::filesystem::path& dir) {
 
 // Exit status of a run (spec/contract.md): 0 completed, 1 failed, 128 + the signal when
 // interrupted (130 SIGINT, 143 SIGTERM), as a shell reports a process ended by it.
-int finish(const std::string& name, const flume::RunResult& result, const flume::RunOptions& opt,
-           bool quiet) {
+int finish(const std::string& name, const flume::RunResult& result, const flume::RunOptions& opt) {
   if (result.interrupted) {
     std::cerr << fmt::format(
         "flume: {}: interrupted; checkpoint written, continue with `flume "
@@ -54,7 +53,7 @@ int finish(const std::string& name, const flume::RunResult& result, const flume:
                              result.error, opt.out_dir.string());
     return 1;
   }
-  if (!quiet) std::cout << fmt::format("results: {}\n", opt.out_dir.string());
+  if (!opt.quiet) std::cout << fmt::format("results: {}\n", opt.out_dir.string());
   return 0;
 }
 
@@ -65,7 +64,7 @@ int cmd_run(const std::string& case_file, const std::string& out,
   opt.out_dir =
       out.empty() ? std::filesystem::path("runs") / spec.name : std::filesystem::path(out);
   check_out_dir(opt.out_dir);
-  return finish(spec.name, flume::run_case(spec, opt), opt, opt.quiet);
+  return finish(spec.name, flume::run_case(spec, opt), opt);
 }
 
 int cmd_resume(const std::string& dir, flume::RunOptions opt) {
@@ -73,7 +72,7 @@ int cmd_resume(const std::string& dir, flume::RunOptions opt) {
   if (!std::filesystem::is_directory(opt.out_dir))
     throw flume::InputError(fmt::format("{}: not a run directory", dir));
   check_out_dir(opt.out_dir);
-  return finish(opt.out_dir.filename().string(), flume::resume_run(opt), opt, opt.quiet);
+  return finish(opt.out_dir.filename().string(), flume::resume_run(opt), opt);
 }
 
 int cmd_cases() {
