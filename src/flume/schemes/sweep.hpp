@@ -124,13 +124,13 @@ inline void pair_share(const Eq& eq, const AccStore<Acc>& acc, const OwnStore<O>
 // exactly zero), and the compiler vectorises the loop over j. flatten inlines the equations.
 // When the window is a whole number of kLanes (Lanes), it is walked in groups of kLanes, lane l
 // of each group adding i's share to partial sum l directly; otherwise the shares go through
-// shares.block and are folded after the loop.
+// shares.block and are folded after the loop. (Its two wrappers below: pair_block, flattened,
+// and pair_block_rare.)
 template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
           class OwnTuple, class ShareTuple, std::size_t... I>
-FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
-                              const OwnTuple& own, ShareTuple& shares, std::size_t i,
-                              std::size_t cb, std::size_t lo, std::size_t ce,
-                              std::index_sequence<I...>) {
+inline void pair_block_body(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
+                            const OwnTuple& own, ShareTuple& shares, std::size_t i, std::size_t cb,
+                            std::size_t lo, std::size_t ce, std::index_sequence<I...>) {
   const Vec<D>* x = ps.x.data();
   const double* hs = ps.h.data();
   const Vec<D> xi = x[i];
@@ -175,17 +175,42 @@ FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
   }
 }
 
+// A window of a whole number of kLanes, the equations flattened into the vectorised loop.
+template <int D, class Kernel, bool UniformH, bool Real, class EqTuple, class AccTuple,
+          class OwnTuple, class ShareTuple, std::size_t... I>
+FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs, AccTuple& acc,
+                              const OwnTuple& own, ShareTuple& shares, std::size_t i,
+                              std::size_t cb, std::size_t lo, std::size_t ce,
+                              std::index_sequence<I...> seq) {
+  pair_block_body<D, Kernel, UniformH, Real, true>(ps, h0, eqs, acc, own, shares, i, cb, lo, ce,
+                                                   seq);
+}
+
+// A window that cannot be widened to a whole number of kLanes within the particles this thread
+// may touch (a few windows at the start of a slab, and tiny sets): rare, so out of line and not
+// flattened. Compiled as pair_block is, flattened into the slab, it took a fifth of each
+// kernel's scheme unit (its compile 189 s -> 155 s without, the Wendland unit, two at a time).
+template <int D, class Kernel, bool UniformH, bool Real, class EqTuple, class AccTuple,
+          class OwnTuple, class ShareTuple, std::size_t... I>
+[[gnu::noinline]] void pair_block_rare(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
+                                       AccTuple& acc, const OwnTuple& own, ShareTuple& shares,
+                                       std::size_t i, std::size_t cb, std::size_t ce,
+                                       std::index_sequence<I...> seq) {
+  pair_block_body<D, Kernel, UniformH, Real, false>(ps, h0, eqs, acc, own, shares, i, cb, cb, ce,
+                                                    seq);
+}
+
 // pair_block kept out of the slab's loop. The slab (flattened) inlines pair_block when the
 // group accumulates scalars (density, continuity: 10-16 % faster, the block's set-up hoisted
 // out of the particle loop) and calls it through this for larger accumulators: inlined, the
 // momentum sweep ran 3 % slower and CSPH's correction sweep (two 2 x 2 matrices) 2.7 x slower.
-template <int D, class Kernel, bool UniformH, bool Real, bool Lanes, class EqTuple, class AccTuple,
+template <int D, class Kernel, bool UniformH, bool Real, class EqTuple, class AccTuple,
           class OwnTuple, class ShareTuple, std::size_t... I>
 [[gnu::noinline]] void pair_block_call(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
                                        AccTuple& acc, const OwnTuple& own, ShareTuple& shares,
                                        std::size_t i, std::size_t cb, std::size_t lo,
                                        std::size_t ce, std::index_sequence<I...> seq) {
-  pair_block<D, Kernel, UniformH, Real, Lanes>(ps, h0, eqs, acc, own, shares, i, cb, lo, ce, seq);
+  pair_block<D, Kernel, UniformH, Real>(ps, h0, eqs, acc, own, shares, i, cb, lo, ce, seq);
 }
 
 // The pairs of the particles i of the cells [c_begin, c_end) (one slab), as sweep_pairs says.
@@ -213,6 +238,7 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
   // other cells: their shares are exact zeros, but a real j's accumulator is still written, so
   // the window must stay within [owned, je), the particles whose accumulators only this thread
   // touches in this phase (its slab's layers and the next); ghosts are not written at all.
+  // A block that cannot be widened within them goes to pair_block_rare.
   const std::size_t owned = grid.real_begin(c_begin);
   auto run = [&](std::size_t i, std::size_t jb, std::size_t je, auto real) {
     constexpr bool kReal = decltype(real)::value;
@@ -221,21 +247,14 @@ FLUME_FLATTEN void slab_pairs(const CellGrid<D>& grid, const ParticleSet<D>& ps,
       const std::size_t ce = std::min(je, cb + kChunk);
       const std::size_t n = ce - cb;
       const std::size_t widened = (n + kLanes - 1) / kLanes * kLanes;
-      if constexpr (kInlineBlocks) {
-        if (ce >= floor + widened)
-          pair_block<D, Kernel, UniformH, kReal, true>(ps, h0, eqs, acc, own, shares, i,
-                                                       ce - widened, cb, ce, seq);
-        else
-          pair_block<D, Kernel, UniformH, kReal, false>(ps, h0, eqs, acc, own, shares, i, cb, cb,
-                                                        ce, seq);
-      } else {
-        if (ce >= floor + widened)
-          pair_block_call<D, Kernel, UniformH, kReal, true>(ps, h0, eqs, acc, own, shares, i,
-                                                            ce - widened, cb, ce, seq);
-        else
-          pair_block_call<D, Kernel, UniformH, kReal, false>(ps, h0, eqs, acc, own, shares, i, cb,
-                                                             cb, ce, seq);
-      }
+      if (ce < floor + widened)
+        pair_block_rare<D, Kernel, UniformH, kReal>(ps, h0, eqs, acc, own, shares, i, cb, ce, seq);
+      else if constexpr (kInlineBlocks)
+        pair_block<D, Kernel, UniformH, kReal>(ps, h0, eqs, acc, own, shares, i, ce - widened, cb,
+                                               ce, seq);
+      else
+        pair_block_call<D, Kernel, UniformH, kReal>(ps, h0, eqs, acc, own, shares, i, ce - widened,
+                                                    cb, ce, seq);
     }
   };
 
