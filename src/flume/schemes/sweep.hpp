@@ -188,8 +188,8 @@ FLUME_FLATTEN void pair_block(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
 
 // A window that cannot be widened to a whole number of kLanes within the particles this thread
 // may touch (a few windows at the start of a slab, and tiny sets): rare, so out of line and not
-// flattened. Compiled as pair_block is, flattened into the slab, it took a fifth of each
-// kernel's scheme unit (its compile 189 s -> 155 s without, the Wendland unit, two at a time).
+// flattened. Compiled as pair_block is, flattened into the slab, it took a quarter of each
+// kernel's scheme unit (the Wendland unit 210 s with it, 156 s without: two compiles at once).
 template <int D, class Kernel, bool UniformH, bool Real, class EqTuple, class AccTuple,
           class OwnTuple, class ShareTuple, std::size_t... I>
 [[gnu::noinline]] void pair_block_rare(const ParticleSet<D>& ps, double h0, EqTuple& eqs,
