@@ -55,6 +55,19 @@
 
 namespace flume {
 
+namespace detail {
+// Whether a step whose particles share one h takes the pair loop specialised for it (h and the
+// cut constants hoisted). The sanitizer build sweeps every step through the general loop: the
+// two differ only in where h comes from (the general one also reads h_j, a superset of the
+// fast loop's memory accesses: the same windows, indices and stores), and compiling one loop
+// instead of two halves each kernel's scheme unit there (CI's longest compile jobs).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kUniformHPath = false;
+#else
+inline constexpr bool kUniformHPath = true;
+#endif
+}  // namespace detail
+
 // What a sweep needs besides the particles: the cell grid of this step, scratch arrays, the
 // common smoothing length when every particle has the same one (else 0), and the clock that
 // times each sweep (may be null).
@@ -446,8 +459,8 @@ double sweep_group(const SweepContext<D>& ctx, const ParticleSet<D>& ps, const T
       const auto i = static_cast<std::size_t>(ii);
       (std::get<I>(acc).set(i, std::get<I>(eqt).init(i)), ...);
     }
-    if (ctx.uniform_h > 0.0)
-      sweep_pairs<D, Kernel, true>(ctx, ps, eqt, acc, own, flags.data(), seq);
+    if (kUniformHPath && ctx.uniform_h > 0.0)
+      sweep_pairs<D, Kernel, kUniformHPath>(ctx, ps, eqt, acc, own, flags.data(), seq);
     else
       sweep_pairs<D, Kernel, false>(ctx, ps, eqt, acc, own, flags.data(), seq);
     auto finish = [&](std::size_t i) {
